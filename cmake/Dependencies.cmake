@@ -1,0 +1,21 @@
+# Every dependency is a Debian package; a missing one stops the configure step
+# with one line naming the package (scripts/setup installs them all).
+
+function(cgfs_require_package found package what)
+  if(NOT ${found})
+    message(FATAL_ERROR "${what} not found: install the Debian package '${package}' (or run scripts/setup)")
+  endif()
+endfunction()
+
+find_package(glm QUIET CONFIG)
+cgfs_require_package(glm_FOUND libglm-dev "GLM")
+
+find_package(PkgConfig QUIET)
+cgfs_require_package(PKG_CONFIG_FOUND pkgconf "pkg-config")
+pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
+cgfs_require_package(STB_FOUND libstb-dev "stb (stb_image, stb_image_write)")
+
+if(CGFS_BUILD_TESTS)
+  find_package(Catch2 2 QUIET CONFIG)
+  cgfs_require_package(Catch2_FOUND catch2 "Catch2 v2")
+endif()

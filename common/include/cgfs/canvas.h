@@ -1,0 +1,49 @@
+// The canvas of book chapter 1 ("The canvas", "Coordinate systems").
+//
+// Coordinates have their origin at the centre, x grows to the right and y grows
+// upwards. For a Cw x Ch canvas the addressable pixels are
+//   x in [-Cw/2, Cw/2 - 1] and y in [-Ch/2, Ch/2 - 1],
+// so every full-canvas loop is half-open: for (x = -Cw/2; x < Cw/2; ++x).
+// Sizes are even so that the centre sits between four pixels, as in the book.
+#pragma once
+
+#include <optional>
+
+#include "cgfs/color.h"
+#include "cgfs/image.h"
+
+namespace cgfs {
+
+// A position in the image in memory order (column from the left, row from the top).
+struct ScreenPoint {
+  int column = 0;
+  int row = 0;
+  friend bool operator==(const ScreenPoint&, const ScreenPoint&) = default;
+};
+
+class Canvas {
+ public:
+  // Throws std::invalid_argument unless both sizes are even and positive.
+  Canvas(int width, int height, Color background = kWhite);
+
+  int Width() const { return image_.Width(); }
+  int Height() const { return image_.Height(); }
+
+  // Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (spec §1.1: the book's Ch/2 - y would put
+  // y = Ch/2 on row 0 and y = -Ch/2 outside). Empty for pixels off the canvas.
+  std::optional<ScreenPoint> ToScreen(int x, int y) const;
+
+  // The book's only drawing primitive: clamps and rounds the colour, and
+  // silently ignores pixels outside the canvas.
+  void PutPixel(int x, int y, const Color& color);
+
+  // What PutPixel stored at (x, y), in canvas coordinates. (x, y) must be on the canvas.
+  Rgb8 GetPixel(int x, int y) const;
+
+  const Image& GetImage() const { return image_; }
+
+ private:
+  Image image_;
+};
+
+}  // namespace cgfs

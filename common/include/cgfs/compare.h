@@ -1,0 +1,44 @@
+// Comparing two images under the project's one tolerance (docs/tolerance.md).
+// Used by the golden-image tests and by tools/cgfs-compare for students.
+#pragma once
+
+#include <string>
+
+#include "cgfs/image.h"
+
+namespace cgfs {
+
+struct Tolerance {
+  // A pixel "differs" when any of its channels is off by more than this many levels.
+  int channel_levels = 2;
+  // The images match when at most this share of the pixels differ
+  // (36 pixels of a 600x600 image: room for a few edge pixels, not for a 10x10 block).
+  double differing_fraction = 0.0001;
+
+  long long AllowedDifferingPixels(long long pixels) const;
+};
+
+struct Comparison {
+  long long pixels = 0;
+  long long changed_pixels = 0;    // any channel differs at all
+  long long differing_pixels = 0;  // beyond Tolerance::channel_levels
+  long long allowed_differing_pixels = 0;
+  int max_channel_difference = 0;
+  double mean_channel_difference = 0;  // over every channel of every pixel
+  // Bounding box (memory order, inclusive) of the differing pixels; valid when differing_pixels >
+  // 0.
+  int first_column = 0, first_row = 0, last_column = 0, last_row = 0;
+  bool passed = false;
+  // The expected image faded to pale grey; changed pixels orange, differing pixels red.
+  Image difference;
+};
+
+// Throws cgfs::Error when the sizes differ.
+Comparison CompareImages(const Image& expected, const Image& actual,
+                         const Tolerance& tolerance = {});
+
+// A few lines with the numbers, for people. Positions are given in memory order
+// (column, row from the top-left) and, for even sizes, in the book's canvas coordinates.
+std::string Describe(const Comparison& comparison, int width, int height);
+
+}  // namespace cgfs

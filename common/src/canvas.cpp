@@ -1,0 +1,49 @@
+#include "cgfs/canvas.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace cgfs {
+
+namespace {
+
+Rgb8 ToRgb8(const Color& color) {
+  return {ToChannel(color.r), ToChannel(color.g), ToChannel(color.b)};
+}
+
+int CheckedSize(int size, const char* what) {
+  if (size <= 0 || size % 2 != 0) {
+    throw std::invalid_argument(std::string("canvas ") + what + " must be a positive even number");
+  }
+  return size;
+}
+
+}  // namespace
+
+Canvas::Canvas(int width, int height, Color background)
+    : image_(CheckedSize(width, "width"), CheckedSize(height, "height"), ToRgb8(background)) {}
+
+std::optional<ScreenPoint> Canvas::ToScreen(int x, int y) const {
+  const ScreenPoint screen{Width() / 2 + x, Height() / 2 - y - 1};
+  if (!image_.Contains(screen.column, screen.row)) {
+    return std::nullopt;
+  }
+  return screen;
+}
+
+void Canvas::PutPixel(int x, int y, const Color& color) {
+  if (const auto screen = ToScreen(x, y)) {
+    image_.Set(screen->column, screen->row, ToRgb8(color));
+  }
+}
+
+Rgb8 Canvas::GetPixel(int x, int y) const {
+  const auto screen = ToScreen(x, y);
+  if (!screen) {
+    throw std::out_of_range("GetPixel(" + std::to_string(x) + ", " + std::to_string(y) +
+                            ") is outside the canvas");
+  }
+  return image_.At(screen->column, screen->row);
+}
+
+}  // namespace cgfs

@@ -1,0 +1,49 @@
+// Spec §3.3-3.4: the chapter's figures, pixel by pixel and as whole images.
+#include <catch2/catch.hpp>
+
+#include "golden.h"
+#include "raytracer.h"
+
+using cgfs::Rgb8;
+using cgfs::test::CheckAgainstGolden;
+using cgfs::test::RenderFigureNamed;
+
+namespace {
+
+constexpr Rgb8 kRed{255, 0, 0};
+constexpr Rgb8 kGreen{0, 255, 0};
+constexpr Rgb8 kBlue{0, 0, 255};
+constexpr Rgb8 kYellow{255, 255, 0};
+constexpr Rgb8 kWhite{255, 255, 255};
+
+}  // namespace
+
+TEST_CASE("pinned pixels of the scene with the ground sphere", "[figures]") {
+  const Canvas canvas = RenderFigureNamed(Figures(), "fig-2-11-with-ground");
+  CHECK(canvas.GetPixel(0, -150) == kRed);
+  CHECK(canvas.GetPixel(-250, 0) == kGreen);
+  CHECK(canvas.GetPixel(250, 0) == kBlue);
+  CHECK(canvas.GetPixel(0, 100) == kWhite);
+  CHECK(canvas.GetPixel(-300, -300) == kYellow);
+  CHECK(canvas.GetPixel(-200, -100) == kGreen);
+  CHECK(canvas.GetPixel(100, -250) == kRed);
+  CHECK(canvas.GetPixel(0, 0) == kRed);  // the tangent ray (disc = 0) counts as a hit
+}
+
+TEST_CASE("pinned pixels of the three-sphere scene", "[figures]") {
+  const Canvas canvas = RenderFigureNamed(Figures(), "fig-2-11");
+  CHECK(canvas.GetPixel(0, -150) == kRed);
+  CHECK(canvas.GetPixel(-250, 0) == kGreen);
+  CHECK(canvas.GetPixel(250, 0) == kBlue);
+  CHECK(canvas.GetPixel(0, 100) == kWhite);
+  CHECK(canvas.GetPixel(-300, -300) == kWhite);  // no ground: background
+  CHECK(canvas.GetPixel(0, 0) == kRed);
+}
+
+TEST_CASE("fig-2-11 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-2-11");
+}
+
+TEST_CASE("fig-2-11-with-ground matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-2-11-with-ground");
+}

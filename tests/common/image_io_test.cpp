@@ -1,0 +1,144 @@
+// PNG and PPM files: round trips, the formats other programs write, and
+// clear errors for bad files.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "cgfs/error.h"
+#include "cgfs/image_io.h"
+
+namespace fs = std::filesystem;
+using cgfs::Image;
+using cgfs::Rgb8;
+
+namespace {
+
+// A fresh, empty folder per test case.
+fs::path TemporaryFolder() {
+  static int counter = 0;
+  const fs::path folder =
+      fs::temp_directory_path() /
+      ("cgfs-image-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+void WriteText(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+Image TestPattern() {
+  Image image(7, 5);
+  for (int row = 0; row < 5; ++row) {
+    for (int column = 0; column < 7; ++column) {
+      image.Set(column, row,
+                Rgb8{static_cast<std::uint8_t>(column * 36), static_cast<std::uint8_t>(row * 60),
+                     static_cast<std::uint8_t>((column + row) % 2 ? 255 : 3)});
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("PNG round trip keeps every byte", "[image-io]") {
+  const fs::path file = TemporaryFolder() / "pattern.png";
+  cgfs::WriteImage(TestPattern(), file);
+  CHECK(cgfs::ReadImage(file) == TestPattern());
+  CHECK_FALSE(fs::exists(file.string() + ".partial"));
+}
+
+TEST_CASE("binary PPM round trip keeps every byte", "[image-io]") {
+  const fs::path file = TemporaryFolder() / "pattern.ppm";
+  cgfs::WriteImage(TestPattern(), file);
+  std::ifstream in(file, std::ios::binary);
+  std::string magic(2, ' ');
+  in.read(magic.data(), 2);
+  CHECK(magic == "P6");
+  CHECK(cgfs::ReadImage(file) == TestPattern());
+}
+
+TEST_CASE("ASCII PPM with comments and another maximum value", "[image-io]") {
+  const fs::path file = TemporaryFolder() / "ascii.ppm";
+  WriteText(file,
+            "P3\n# written by a student's program\n2 2\n# max\n15\n"
+            "15 0 0   0 15 0\n0 0 15  5 10 15\n");
+  const Image image = cgfs::ReadImage(file);
+  REQUIRE(image.Width() == 2);
+  REQUIRE(image.Height() == 2);
+  CHECK(image.At(0, 0) == Rgb8{255, 0, 0});
+  CHECK(image.At(1, 0) == Rgb8{0, 255, 0});
+  CHECK(image.At(0, 1) == Rgb8{0, 0, 255});
+  CHECK(image.At(1, 1) == Rgb8{85, 170, 255});
+}
+
+TEST_CASE("16-bit binary PPM is scaled to 8 bits", "[image-io]") {
+  const fs::path file = TemporaryFolder() / "deep.ppm";
+  WriteText(file, std::string("P6 1 1 65535\n\xff\xff\x80\x00\x00\x00", 13 + 6));
+  CHECK(cgfs::ReadImage(file).At(0, 0) == Rgb8{255, 128, 0});
+}
+
+TEST_CASE("writing replaces an existing file", "[image-io]") {
+  const fs::path file = TemporaryFolder() / "pattern.png";
+  WriteText(file, "old contents");
+  cgfs::WriteImage(TestPattern(), file);
+  CHECK(cgfs::ReadImage(file) == TestPattern());
+}
+
+TEST_CASE("bad image files are refused with one-line errors", "[image-io]") {
+  const fs::path folder = TemporaryFolder();
+  auto message_for = [](const fs::path& path) {
+    try {
+      cgfs::ReadImage(path);
+    } catch (const cgfs::Error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+
+  CHECK_THAT(message_for(folder / "missing.png"), Catch::Contains("cannot read"));
+  CHECK_THAT(message_for(folder), Catch::Contains("directory"));
+
+  WriteText(folder / "empty.png", "");
+  CHECK_THAT(message_for(folder / "empty.png"), Catch::Contains("empty"));
+
+  WriteText(folder / "text.png", "this is not an image at all");
+  CHECK_THAT(message_for(folder / "text.png"), Catch::Contains("neither a PNG nor a PPM"));
+
+  WriteText(folder / "short.ppm", "P6\n4 4\n255\nabc");
+  CHECK_THAT(message_for(folder / "short.ppm"), Catch::Contains("ends after 3 of 48 pixel bytes"));
+
+  WriteText(folder / "short-ascii.ppm", "P3\n2 1\n255\n1 2 3 4\n");
+  CHECK_THAT(message_for(folder / "short-ascii.ppm"),
+             Catch::Contains("the file ends before the pixel value"));
+
+  WriteText(folder / "big-sample.ppm", "P3\n1 1\n255\n1 256 3\n");
+  CHECK_THAT(message_for(folder / "big-sample.ppm"), Catch::Contains("exceeds the maximum"));
+
+  WriteText(folder / "huge.ppm", "P3\n99999999999 1\n255\n");
+  CHECK_THAT(message_for(folder / "huge.ppm"), Catch::Contains("too large"));
+
+  // A truncated PNG: the real header, then nothing.
+  cgfs::WriteImage(TestPattern(), folder / "whole.png");
+  std::ifstream whole(folder / "whole.png", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  WriteText(folder / "truncated.png", bytes.substr(0, bytes.size() / 2));
+  CHECK_THAT(message_for(folder / "truncated.png"), Catch::Contains("not a readable PNG"));
+
+  for (const std::string& message :
+       {message_for(folder / "text.png"), message_for(folder / "short-ascii.ppm")}) {
+    CHECK(message.find('\n') == std::string::npos);
+  }
+}
+
+TEST_CASE("an unwritable path is an error, and leaves nothing behind", "[image-io]") {
+  const fs::path folder = TemporaryFolder();
+  CHECK_THROWS_AS(cgfs::WriteImage(TestPattern(), folder / "no-such-folder" / "x.png"),
+                  cgfs::Error);
+  CHECK(fs::is_empty(folder));
+}

@@ -1,0 +1,106 @@
+// cgfs-compare EXPECTED ACTUAL: is a student's image the chapter's figure?
+//
+// EXPECTED is an image file, or a figure named CHAPTER/FIGURE (for example
+// 02-basic-rays/fig-2-11), which means tests/golden/CHAPTER/FIGURE.png.
+// ACTUAL is the student's image, PNG or PPM (P6 or P3), from any language.
+// Prints the numbers, writes a difference image, and exits 0 when the images
+// match under the tolerance of the reference tests, 1 when they do not, and 2
+// on bad input.
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cgfs/command_line.h"
+#include "cgfs/compare.h"
+#include "cgfs/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string KnownFigures(const fs::path& golden, const fs::path& chapter) {
+  std::string names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(golden / chapter, error)) {
+    if (entry.path().extension() == ".png") {
+      names += (names.empty() ? "" : ", ") + (chapter / entry.path().stem()).string();
+    }
+  }
+  return names;
+}
+
+// A file that exists, or CHAPTER/FIGURE among the golden images.
+fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
+  if (fs::exists(argument)) {
+    return argument;
+  }
+  const fs::path name(argument);
+  const fs::path chapter = name.parent_path();
+  if (name.has_extension() || chapter.empty() || chapter.has_parent_path()) {
+    throw cgfs::Error("cannot read '" + argument + "': no such file");
+  }
+  if (!fs::is_directory(golden / chapter)) {
+    throw cgfs::Error("unknown chapter '" + chapter.string() + "' (no folder " +
+                      (golden / chapter).string() + ")");
+  }
+  const fs::path file = golden / chapter / (name.filename().string() + ".png");
+  if (!fs::exists(file)) {
+    throw cgfs::Error("unknown figure '" + argument + "'; known: " + KnownFigures(golden, chapter));
+  }
+  return file;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> arguments;
+  std::string difference_path;
+  std::string golden = CGFS_GOLDEN_DIR;
+  cgfs::CommandLine command_line(
+      "cgfs-compare",
+      "Compares ACTUAL (PNG or PPM) with EXPECTED (an image, or a figure CHAPTER/FIGURE such as\n"
+      "02-basic-rays/fig-2-11) under the reference tests' tolerance: a pixel differs when a\n"
+      "channel is off by more than 2 levels, and at most 0.01% of the pixels may differ.\n"
+      "Exit status: 0 match, 1 no match, 2 bad input.");
+  command_line.AddString("--diff", "FILE",
+                         "where to write the difference image (default ACTUAL.diff.png)",
+                         &difference_path);
+  command_line.AddString("--golden", "DIR", "folder of the golden images (default: this repo's)",
+                         &golden);
+  command_line.SetPositionals({"EXPECTED", "ACTUAL"}, &arguments);
+  try {
+    if (!command_line.Parse(argc, argv)) {
+      return 0;
+    }
+    const fs::path expected_file = ResolveExpected(arguments[0], golden);
+    const fs::path actual_file = arguments[1];
+    if (difference_path.empty()) {
+      difference_path = (actual_file.parent_path() / actual_file.stem()).string() + ".diff.png";
+    }
+    std::error_code error;
+    if (fs::equivalent(difference_path, actual_file, error) ||
+        fs::equivalent(difference_path, expected_file, error)) {
+      throw cgfs::UsageError("--diff would overwrite one of the images being compared");
+    }
+
+    const cgfs::Image expected = cgfs::ReadImage(expected_file);
+    const cgfs::Image actual = cgfs::ReadImage(actual_file);
+    const cgfs::Comparison comparison = cgfs::CompareImages(expected, actual);
+    cgfs::WriteImage(comparison.difference, difference_path);
+
+    std::cout << "expected: " << expected_file.string() << "\n"
+              << "actual:   " << actual_file.string() << "\n"
+              << cgfs::Describe(comparison, actual.Width(), actual.Height())
+              << "difference image: " << difference_path
+              << " (red: beyond tolerance, orange: within it)\n";
+    return comparison.passed ? 0 : 1;
+  } catch (const cgfs::UsageError& error) {
+    std::cerr << "cgfs-compare: error: " << error.what() << " (try --help)\n";
+    return 2;
+  } catch (const cgfs::Error& error) {
+    std::cerr << "cgfs-compare: error: " << error.what() << "\n";
+    return 2;
+  }
+}
