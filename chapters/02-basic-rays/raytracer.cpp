@@ -48,7 +48,7 @@ Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const S
   return closest_sphere->color;
 }
 
-// Listing 2.2. t_min = 1 keeps only what lies beyond the projection plane.
+// Listing 2-2. t_min = 1 keeps only what lies beyond the projection plane.
 // The loops are half-open so that a Cw x Ch canvas gets exactly Cw x Ch rays.
 void RenderScene(const Scene& scene, Canvas& canvas) {
   const Vec3 O{0, 0, 0};

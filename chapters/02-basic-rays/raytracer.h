@@ -46,7 +46,7 @@ std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const
 // [t_min, t_max], or the background colour.
 Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const Scene& scene);
 
-// The main loop (Listing 2.2): one ray per canvas pixel, from the camera at the origin.
+// The main loop (Listing 2-2): one ray per canvas pixel, from the camera at the origin.
 void RenderScene(const Scene& scene, Canvas& canvas);
 
 // The scenes of this chapter's figures (spec §3.3).

@@ -1,0 +1,75 @@
+// Chapter 3, "Light": the scene, and the functions of the chapter
+// under the book's names. Where the book reads a global (the canvas size, the
+// viewport, the scene), the function takes it as a last parameter.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "cgfs/canvas.h"
+#include "cgfs/color.h"
+#include "cgfs/figure.h"
+#include "cgfs/math.h"
+
+using cgfs::Canvas;
+using cgfs::Color;
+using cgfs::Vec3;
+
+struct Sphere {
+  Vec3 center;
+  double radius = 1;
+  Color color;
+  double specular = -1;  // "Specular Reflection": the shininess exponent s; -1 means matte
+};
+
+// "Light Sources". All light is white, so a light is one intensity.
+enum class LightType { kAmbient, kPoint, kDirectional };
+
+struct Light {
+  LightType type = LightType::kAmbient;
+  double intensity = 0;
+  Vec3 position;   // point lights
+  Vec3 direction;  // directional lights: the direction towards the light, L itself
+};
+
+// The viewport is a Vw x Vh window on the plane z = d ("Canvas to Viewport").
+struct Viewport {
+  double width = 1;
+  double height = 1;
+  double distance = 1;  // d, the projection plane
+};
+
+struct Scene {
+  Viewport viewport;
+  Color background_color = cgfs::kWhite;
+  std::vector<Sphere> spheres;
+  std::vector<Light> lights;
+};
+
+// "Canvas to Viewport": the point of the viewport that canvas pixel (x, y) looks
+// through. It is also the ray direction D = V - O, since the camera is at O = 0.
+Vec3 CanvasToViewport(double x, double y, const Canvas& canvas, const Viewport& viewport);
+
+// "Ray Meets Sphere": the two solutions t1 >= t2 of the quadratic
+// t^2<D,D> + 2t<CO,D> + <CO,CO> - r^2 = 0, or (inf, inf) when the ray misses.
+std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere);
+
+// Listing 3-2, "Rendering with Specular Reflections": the light intensity at point P
+// with unit normal N, seen from direction V (from P towards the camera), on a surface
+// with specular exponent s. Diffuse (Listing 3-1) plus specular, for s != -1.
+double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s, const Scene& scene);
+
+// Listing 3-3: the closest sphere hit with t in [t_min, t_max], its colour lit by
+// ComputeLighting at the hit point; or the background colour.
+Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const Scene& scene);
+
+// The main loop (Listing 2-2): one ray per canvas pixel, from the camera at the origin.
+void RenderScene(const Scene& scene, Canvas& canvas);
+
+// The scenes of this chapter's figures (spec §4.4): matte spheres (Figure 3-7), and
+// the same with specular exponents (Figure 3-16).
+Scene SceneDiffuse();
+Scene SceneSpecular();
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();
