@@ -2,14 +2,15 @@
 
 #include <cmath>
 
-// "Canvas to Viewport": scale pixel units to viewport units; the viewport lies at z = d.
+// Listing 2-3, "Canvas to Viewport": scale pixel units to viewport units; the viewport
+// lies at z = d.
 Vec3 CanvasToViewport(double x, double y, const Canvas& canvas, const Viewport& viewport) {
   return {x * viewport.width / canvas.Width(), y * viewport.height / canvas.Height(),
           viewport.distance};
 }
 
-// "Ray Meets Sphere": put the ray P = O + tD into the sphere equation <P-C, P-C> = r^2
-// and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
+// Listing 2-5, "Ray Meets Sphere": put the ray P = O + tD into the sphere equation
+// <P-C, P-C> = r^2 and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
 std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere) {
   const double r = sphere.radius;
   const Vec3 CO = O - sphere.center;
@@ -27,7 +28,7 @@ std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const
   return {t1, t2};
 }
 
-// "Rendering our First Spheres": keep the nearest root inside [t_min, t_max].
+// Listing 2-4, "Rendering our First Spheres": keep the nearest root inside [t_min, t_max].
 Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const Scene& scene) {
   double closest_t = cgfs::kInf;
   const Sphere* closest_sphere = nullptr;

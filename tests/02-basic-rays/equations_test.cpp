@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "printing.h"
 #include "raytracer.h"
 
 using Catch::Detail::Approx;

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "golden.h"
+#include "printing.h"
 #include "raytracer.h"
 
 using cgfs::Rgb8;

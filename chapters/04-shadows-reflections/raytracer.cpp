@@ -1,0 +1,143 @@
+#include "raytracer.h"
+
+#include <cmath>
+
+// Listing 2-3, "Canvas to Viewport": scale pixel units to viewport units; the viewport
+// lies at z = d.
+Vec3 CanvasToViewport(double x, double y, const Canvas& canvas, const Viewport& viewport) {
+  return {x * viewport.width / canvas.Width(), y * viewport.height / canvas.Height(),
+          viewport.distance};
+}
+
+// Listing 2-5, "Ray Meets Sphere": put the ray P = O + tD into the sphere equation
+// <P-C, P-C> = r^2 and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
+std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere) {
+  const double r = sphere.radius;
+  const Vec3 CO = O - sphere.center;
+
+  const double a = glm::dot(D, D);
+  const double b = 2 * glm::dot(CO, D);
+  const double c = glm::dot(CO, CO) - r * r;
+
+  const double discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) {
+    return {cgfs::kInf, cgfs::kInf};
+  }
+  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
+  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
+  return {t1, t2};
+}
+
+// Listing 4-1: keep the nearest root inside [t_min, t_max].
+std::pair<const Sphere*, double> ClosestIntersection(const Vec3& O, const Vec3& D, double t_min,
+                                                     double t_max, const Scene& scene) {
+  double closest_t = cgfs::kInf;
+  const Sphere* closest_sphere = nullptr;
+  for (const Sphere& sphere : scene.spheres) {
+    const auto [t1, t2] = IntersectRaySphere(O, D, sphere);
+    if (t_min <= t1 && t1 <= t_max && t1 < closest_t) {
+      closest_t = t1;
+      closest_sphere = &sphere;
+    }
+    if (t_min <= t2 && t2 <= t_max && t2 < closest_t) {
+      closest_t = t2;
+      closest_sphere = &sphere;
+    }
+  }
+  return {closest_sphere, closest_t};
+}
+
+// "Rendering with Reflections". N must have unit length; R may have any length,
+// and the result has the same length as R.
+Vec3 ReflectRay(const Vec3& R, const Vec3& N) {
+  return 2.0 * N * glm::dot(N, R) - R;
+}
+
+// Listing 4-3. L points from P towards the light and is not normalised; the
+// cosines divide by the lengths instead.
+double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s, const Scene& scene) {
+  double i = 0.0;
+  for (const Light& light : scene.lights) {
+    if (light.type == LightType::kAmbient) {
+      i += light.intensity;
+      continue;
+    }
+    Vec3 L;
+    double t_max = 0;
+    if (light.type == LightType::kPoint) {
+      L = light.position - P;
+      t_max = 1;  // the light itself is at P + 1*L: what lies beyond it casts no shadow
+    } else {
+      L = light.direction;
+      t_max = cgfs::kInf;
+    }
+
+    // "Rendering with Shadows": is any sphere between P and the light?
+    const auto [shadow_sphere, shadow_t] = ClosestIntersection(P, L, scene.epsilon, t_max, scene);
+    if (shadow_sphere != nullptr) {
+      continue;
+    }
+
+    // "Diffuse Reflection": I * cos(angle between N and L); light from behind adds nothing.
+    const double n_dot_l = glm::dot(N, L);
+    if (n_dot_l > 0) {
+      i += light.intensity * n_dot_l / (glm::length(N) * glm::length(L));
+    }
+
+    // "Specular Reflection": I * cos(angle between R and V)^s, with R the mirror
+    // image of L about N. As in the book, this is not guarded by n_dot_l > 0.
+    if (s != -1) {
+      const Vec3 R = ReflectRay(L, N);
+      const double r_dot_v = glm::dot(R, V);
+      if (r_dot_v > 0) {
+        i += light.intensity * std::pow(r_dot_v / (glm::length(R) * glm::length(V)), s);
+      }
+    }
+  }
+  return i;
+}
+
+// Listing 4-4: light the closest hit, then mix in what is seen in its reflection.
+Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, int recursion_depth,
+               const Scene& scene) {
+  const auto [closest_sphere, closest_t] = ClosestIntersection(O, D, t_min, t_max, scene);
+  if (closest_sphere == nullptr) {
+    return scene.background_color;
+  }
+
+  const Vec3 P = O + closest_t * D;     // the intersection
+  Vec3 N = P - closest_sphere->center;  // "Sphere Normals": along CP
+  N = N / glm::length(N);
+  // V = -D points from the surface back towards the camera.
+  const Color local_color =
+      closest_sphere->color * ComputeLighting(P, N, -D, closest_sphere->specular, scene);
+
+  // Stop at the recursion limit, or when the surface is not reflective. Without the
+  // limit, two mirrors facing each other would recurse forever.
+  const double r = closest_sphere->reflective;
+  if (recursion_depth <= 0 || r <= 0) {
+    return local_color;
+  }
+
+  // The camera sees, in the mirror, what lies along -D reflected about N.
+  const Vec3 R = ReflectRay(-D, N);
+  const Color reflected_color =
+      TraceRay(P, R, scene.epsilon, cgfs::kInf, recursion_depth - 1, scene);
+
+  return local_color * (1 - r) + reflected_color * r;
+}
+
+// Listing 2-2. t_min = 1 keeps only what lies beyond the projection plane.
+// The loops are half-open so that a Cw x Ch canvas gets exactly Cw x Ch rays.
+void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas) {
+  const Vec3 O{0, 0, 0};
+  const int Cw = canvas.Width();
+  const int Ch = canvas.Height();
+  for (int x = -Cw / 2; x < Cw / 2; ++x) {
+    for (int y = -Ch / 2; y < Ch / 2; ++y) {
+      const Vec3 D = CanvasToViewport(x, y, canvas, scene.viewport);
+      const Color color = TraceRay(O, D, 1, cgfs::kInf, recursion_depth, scene);
+      canvas.PutPixel(x, y, color);
+    }
+  }
+}
