@@ -15,6 +15,7 @@ using cgfs::Color;
 struct Point {
   int x = 0;
   int y = 0;
+  friend bool operator==(const Point&, const Point&) = default;
 };
 
 // "Linear Interpolation": the values d = f(i) of the linear function with

@@ -17,6 +17,7 @@ struct Point {
   int x = 0;
   int y = 0;
   double h = 1;
+  friend bool operator==(const Point&, const Point&) = default;
 };
 
 // "Linear Interpolation": the values d = f(i) of the linear function with

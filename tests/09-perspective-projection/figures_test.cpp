@@ -1,0 +1,39 @@
+// Spec §10.3: the chapter's figure, pixel by pixel and as a whole image.
+#include <catch2/catch.hpp>
+
+#include "golden.h"
+#include "pixels.h"
+#include "printing.h"
+#include "rasterizer.h"
+
+using cgfs::Rgb8;
+using cgfs::test::CheckAgainstGolden;
+using cgfs::test::RenderFigureNamed;
+
+TEST_CASE("pinned pixels of the cube", "[figures]") {
+  const Canvas canvas = RenderFigureNamed(Figures(), "fig-9-4");
+  CHECK(canvas.GetPixel(-240, 0) == Rgb8{0, 0, 255});    // front face, left edge
+  CHECK(canvas.GetPixel(-180, 60) == Rgb8{0, 0, 255});   // front face, top edge
+  CHECK(canvas.GetPixel(-200, 0) == Rgb8{255, 0, 0});    // back face, left edge
+  CHECK(canvas.GetPixel(-100, 0) == Rgb8{255, 0, 0});    // back face, right edge
+  CHECK(canvas.GetPixel(-220, -55) == Rgb8{0, 255, 0});  // from vAf to vAb
+  CHECK(canvas.GetPixel(-160, 0) == Rgb8{255, 255, 255});
+  CHECK(canvas.GetPixel(0, 0) == Rgb8{255, 255, 255});
+}
+
+TEST_CASE("the book's cube: only part of its back face and edges reach the canvas", "[figures]") {
+  const Canvas canvas = RenderFigureNamed(Figures(CubeVariant::kBook), "fig-9-4");
+  long blue = 0;
+  for (const auto& [x, y] : cgfs::test::DrawnPixels(canvas)) {
+    blue += canvas.GetPixel(x, y) == Rgb8{0, 0, 255};
+  }
+  CHECK(blue == 0);                                       // the front face is all off-canvas
+  CHECK(canvas.GetPixel(-300, 0) == Rgb8{255, 0, 0});     // back face, left edge
+  CHECK(canvas.GetPixel(0, -300) == Rgb8{255, 0, 0});     // back face, bottom edge
+  CHECK(canvas.GetPixel(-300, -300) == Rgb8{0, 255, 0});  // where an edge enters the canvas
+  CHECK(canvas.GetPixel(0, 0) == Rgb8{255, 255, 255});
+}
+
+TEST_CASE("fig-9-4 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-9-4");
+}
