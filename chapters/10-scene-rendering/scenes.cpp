@@ -1,0 +1,73 @@
+#include "rasterizer.h"
+
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
+const Model& CubeModel() {
+  static const Model cube{
+      {
+          {1, 1, 1},
+          {-1, 1, 1},
+          {-1, -1, 1},
+          {1, -1, 1},
+          {1, 1, -1},
+          {-1, 1, -1},
+          {-1, -1, -1},
+          {1, -1, -1},
+      },
+      {
+          {{0, 1, 2}, cgfs::kRed},
+          {{0, 2, 3}, cgfs::kRed},  // z = +1
+          {{4, 0, 3}, cgfs::kGreen},
+          {{4, 3, 7}, cgfs::kGreen},  // x = +1
+          {{5, 4, 7}, cgfs::kBlue},
+          {{5, 7, 6}, cgfs::kBlue},  // z = -1
+          {{1, 5, 6}, cgfs::kYellow},
+          {{1, 6, 2}, cgfs::kYellow},  // x = -1
+          {{4, 5, 1}, cgfs::kPurple},
+          {{4, 1, 0}, cgfs::kPurple},  // y = +1
+          {{2, 6, 7}, cgfs::kCyan},
+          {{2, 7, 3}, cgfs::kCyan},  // y = -1
+      },
+  };
+  return cube;
+}
+
+// Figure 10-3: two instances of the cube, the camera at the origin.
+Scene SceneTwoCubes() {
+  Scene scene;
+  scene.instances = {
+      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
+  };
+  return scene;
+}
+
+// Figure 10-10: the instances scaled and rotated, seen from a camera moved back
+// and to the left and turned 30 degrees to the right. Also the scene of
+// chapters 11 to 14.
+Scene SceneTransformedCubes() {
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, cgfs::MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, cgfs::MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+  };
+  return scene;
+}
+
+std::vector<cgfs::Figure> Figures() {
+  return {
+      {"fig-10-2", "the cube moved 7 units forward and 1.5 left, RenderObject (Figure 10-2)",
+       [](Canvas& canvas) {
+         // Listing 10-1 on the cube's vertices, each moved by T = (-1.5, 0, 7).
+         std::vector<Vec3> moved = CubeModel().vertices;
+         for (Vec3& V : moved) {
+           V = V + Vec3(-1.5, 0, 7);
+         }
+         RenderObject(moved, CubeModel().triangles, canvas, Viewport{});
+       }},
+      {"fig-10-3", "two instances of the cube model (Figure 10-3)",
+       [](Canvas& canvas) { RenderScene(SceneTwoCubes(), canvas); }},
+      {"fig-10-10", "scaled and rotated instances from a moved, turned camera (Figure 10-10)",
+       [](Canvas& canvas) { RenderScene(SceneTransformedCubes(), canvas); }},
+  };
+}
