@@ -16,9 +16,9 @@ using cgfs::Color;
 using cgfs::Vec3;
 
 struct Sphere {
-  Vec3 center;
+  Vec3 center{0, 0, 0};
   double radius = 1;
-  Color color;
+  Color color{0, 0, 0};
 };
 
 // The viewport is a Vw x Vh window on the plane z = d ("Canvas to Viewport").

@@ -16,9 +16,9 @@ using cgfs::Color;
 using cgfs::Vec3;
 
 struct Sphere {
-  Vec3 center;
+  Vec3 center{0, 0, 0};
   double radius = 1;
-  Color color;
+  Color color{0, 0, 0};
   double specular = -1;   // "Specular Reflection": the shininess exponent s; -1 means matte
   double reflective = 0;  // "Mirrors and Reflection": 0 not at all .. 1 a perfect mirror
 };
@@ -29,8 +29,8 @@ enum class LightType { kAmbient, kPoint, kDirectional };
 struct Light {
   LightType type = LightType::kAmbient;
   double intensity = 0;
-  Vec3 position;   // point lights
-  Vec3 direction;  // directional lights: the direction towards the light, L itself
+  Vec3 position{0, 0, 0};   // point lights
+  Vec3 direction{0, 0, 0};  // directional lights: the direction towards the light, L itself
 };
 
 // The viewport is a Vw x Vh window on the plane z = d ("Canvas to Viewport").

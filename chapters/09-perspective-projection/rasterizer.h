@@ -63,8 +63,8 @@ std::optional<Point> ProjectVertex(const Vec3& v, const Canvas& canvas, const Vi
 // The eight corners of a box, named as in Listing 9-1: A, B, C, D around the front
 // face and the same letters on the back face.
 struct Cube {
-  Vec3 vAf, vBf, vCf, vDf;
-  Vec3 vAb, vBb, vCb, vDb;
+  Vec3 vAf{}, vBf{}, vCf{}, vDf{};
+  Vec3 vAb{}, vBb{}, vCb{}, vDb{};
 };
 
 // Listing 9-1: the twelve edges of the cube, projected and drawn with DrawLine:

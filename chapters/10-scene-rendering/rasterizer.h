@@ -66,8 +66,8 @@ std::optional<Point> ProjectVertex(const Vec3& v, const Canvas& canvas, const Vi
 
 // "Representing a Cube": a triangle is three indices into its model's vertex list, and a colour.
 struct Triangle {
-  std::array<int, 3> v;
-  Color color;
+  std::array<int, 3> v{};
+  Color color{0, 0, 0};
 };
 
 // "Models and Instances": a model is its geometry, in model space.
