@@ -1,7 +1,9 @@
 // Reading back what a rasterizer drew.
 #pragma once
 
+#include <algorithm>
 #include <set>
+#include <tuple>
 #include <utility>
 
 #include "cgfs/canvas.h"
@@ -19,6 +21,21 @@ inline std::set<std::pair<int, int>> DrawnPixels(const Canvas& canvas) {
     }
   }
   return drawn;
+}
+
+// Row y of a pixel set: its first and last x, and how many pixels it has.
+inline std::tuple<int, int, int> Row(const std::set<std::pair<int, int>>& pixels, int y) {
+  int first = 1 << 30;
+  int last = -(1 << 30);
+  int count = 0;
+  for (const auto& [x, row] : pixels) {
+    if (row == y) {
+      first = std::min(first, x);
+      last = std::max(last, x);
+      ++count;
+    }
+  }
+  return {first, last, count};
 }
 
 }  // namespace cgfs::test

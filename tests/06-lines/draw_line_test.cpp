@@ -1,13 +1,14 @@
-// Spec §7.4: Interpolate and DrawLine, with exact outputs.
+// Spec §7.4: the final DrawLine, pixel by pixel. Every later rasterizer chapter keeps
+// it unchanged and runs these tests too.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 #include <utility>
 #include <vector>
 
 #include "pixels.h"
-#include "printing.h"
 #include "rasterizer.h"
 
 using cgfs::test::DrawnPixels;
@@ -18,12 +19,6 @@ namespace {
 Pixels LinePixels(Point P0, Point P1) {
   Canvas canvas(600, 600);
   DrawLine(P0, P1, cgfs::kBlack, canvas);
-  return DrawnPixels(canvas);
-}
-
-Pixels DraftPixels(DrawLineDraft version, Point P0, Point P1) {
-  Canvas canvas(600, 600);
-  DrawLineDraftVersion(version, P0, P1, cgfs::kBlack, canvas);
   return DrawnPixels(canvas);
 }
 
@@ -52,29 +47,6 @@ void CheckOnePixelPerStep(const Pixels& pixels, Point P0, Point P1) {
 }
 
 }  // namespace
-
-TEST_CASE("Interpolate returns one value per integer step", "[interpolate]") {
-  CHECK(Interpolate(0, 0, 4, 2) == std::vector<double>{0, 0.5, 1, 1.5, 2});
-  CHECK(Interpolate(0, 10, 2, 0) == std::vector<double>{10, 5, 0});
-  CHECK(Interpolate(-2, 1, 1, -5) == std::vector<double>{1, -1, -3, -5});
-}
-
-TEST_CASE("Interpolate with i0 == i1 returns [d0]", "[interpolate]") {
-  CHECK(Interpolate(3, 7, 3, 9) == std::vector<double>{7});
-}
-
-TEST_CASE("Interpolate over a descending range returns nothing", "[interpolate]") {
-  CHECK(Interpolate(5, 0, 3, 1).empty());
-}
-
-TEST_CASE("Interpolate does not drift: the last value is d1", "[interpolate]") {
-  // Accumulating d += a would add up rounding errors over hundreds of steps.
-  for (const auto& [i1, d1] : {std::pair{500, 220.0}, std::pair{440, 220.0}, std::pair{301, 7.0}}) {
-    const std::vector<double> values = Interpolate(0, 0, i1, d1);
-    REQUIRE(values.size() == static_cast<std::size_t>(i1 + 1));
-    CHECK(values.back() == d1);
-  }
-}
 
 TEST_CASE("DrawLine: the shallow segment of the chapter", "[draw-line]") {
   const Pixels pixels = LinePixels({-200, -100}, {240, 120});
@@ -127,46 +99,4 @@ TEST_CASE("DrawLine: a 45-degree segment, where |dx| == |dy|", "[draw-line]") {
   for (int i = -5; i <= 5; ++i) {
     CHECK(pixels.count({i, i}) == 1);
   }
-}
-
-TEST_CASE("the left-to-right draft leaves gaps in a steep line", "[drafts]") {
-  // One pixel per column: 111 columns for a segment 440 pixels tall.
-  CHECK(DraftPixels(DrawLineDraft::kLeftToRight, {-50, -200}, {60, 240}).size() == 111);
-  CHECK(DraftPixels(DrawLineDraft::kLeftToRight, {-200, -100}, {240, 120}).size() == 441);
-}
-
-TEST_CASE("the first two drafts draw nothing from right to left", "[drafts]") {
-  CHECK(DraftPixels(DrawLineDraft::kSlopeIntercept, {240, 120}, {-200, -100}).empty());
-  CHECK(DraftPixels(DrawLineDraft::kIncremental, {240, 120}, {-200, -100}).empty());
-  CHECK(DraftPixels(DrawLineDraft::kSlopeIntercept, {-200, -100}, {240, 120}).size() == 441);
-}
-
-TEST_CASE("the drafts divide by zero on a vertical line without crashing", "[drafts]") {
-  // a = dy / 0 is infinite: the book's versions cannot draw this line.
-  for (const DrawLineDraft draft :
-       {DrawLineDraft::kSlopeIntercept, DrawLineDraft::kIncremental, DrawLineDraft::kLeftToRight}) {
-    CHECK(DraftPixels(draft, {3, -7}, {3, 7}).size() <= 1);
-  }
-  CHECK(DraftPixels(DrawLineDraft::kXOfY, {3, -7}, {3, 7}).size() == 15);
-}
-
-TEST_CASE("x = f(y) draws (0,0)-(50,100) but breaks (0,0)-(100,50)", "[drafts]") {
-  CHECK(DraftPixels(DrawLineDraft::kXOfY, {0, 0}, {50, 100}).size() == 101);
-  CHECK(DraftPixels(DrawLineDraft::kXOfY, {0, 0}, {100, 50}).size() == 51);
-}
-
-TEST_CASE("Listing 6-1 already handles every case", "[drafts]") {
-  CHECK(DraftPixels(DrawLineDraft::kBothCases, {-50, -200}, {60, 240}).size() == 441);
-  CHECK(DraftPixels(DrawLineDraft::kBothCases, {240, 120}, {-200, -100}).size() == 441);
-  CHECK(DraftPixels(DrawLineDraft::kBothCases, {3, -7}, {3, 7}).size() == 15);
-}
-
-TEST_CASE("every draft has a name the command line accepts", "[drafts]") {
-  for (const DrawLineDraft draft : AllDrafts()) {
-    DrawLineDraft parsed = DrawLineDraft::kSlopeIntercept;
-    REQUIRE(DraftFromName(DraftName(draft), &parsed));
-    CHECK(parsed == draft);
-  }
-  DrawLineDraft ignored;
-  CHECK_FALSE(DraftFromName("bresenham", &ignored));
 }

@@ -1,0 +1,107 @@
+// Spec §11.3-11.4: the cube model and the matrices of Listing 10-5, checked by what
+// they do to vectors. Chapter 11 keeps them and runs these tests too.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "checks.h"
+#include "rasterizer.h"
+
+using Catch::Detail::Approx;
+using cgfs::test::CheckNear;
+
+namespace {
+
+glm::dvec4 Point4(const Vec3& v) {
+  return {v, 1.0};
+}
+
+// Where the full matrix chain of Listing 10-5 takes a model vertex, in camera space.
+Vec3 CameraSpace(const Scene& scene, int instance, int vertex) {
+  const Instance& I = scene.instances[static_cast<std::size_t>(instance)];
+  const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
+                       MakeTransformMatrix(I.transform);
+  return cgfs::ToCartesian(M * Point4(I.model->vertices[static_cast<std::size_t>(vertex)]));
+}
+
+}  // namespace
+
+TEST_CASE("the cube model: 8 vertices, 12 triangles wound outwards", "[model]") {
+  const Model& cube = CubeModel();
+  REQUIRE(cube.vertices.size() == 8);
+  REQUIRE(cube.triangles.size() == 12);
+  for (const Triangle& T : cube.triangles) {
+    const Vec3 V0 = cube.vertices[static_cast<std::size_t>(T.v[0])];
+    const Vec3 V1 = cube.vertices[static_cast<std::size_t>(T.v[1])];
+    const Vec3 V2 = cube.vertices[static_cast<std::size_t>(T.v[2])];
+    const Vec3 normal = glm::cross(V1 - V0, V2 - V0);
+    const Vec3 centre_of_triangle = (V0 + V1 + V2) / 3.0;  // the cube's centre is the origin
+    CHECK(glm::dot(normal, centre_of_triangle) > 0);
+  }
+}
+
+TEST_CASE("figure 10-2: the cube moved by T = (-1.5, 0, 7)", "[projection]") {
+  const Canvas canvas(600, 600);
+  const Vec3 T(-1.5, 0, 7);
+  // Vertex 0 -> (-0.5, 1, 8) -> (-37.5, 75), truncated toward zero.
+  CHECK(ProjectVertex(CubeModel().vertices[0] + T, canvas, Viewport{}) == Point{-37, 75});
+  CHECK(ProjectVertex(CubeModel().vertices[6] + T, canvas, Viewport{}) == Point{-250, -100});
+}
+
+TEST_CASE("the model matrix scales, then rotates, then translates", "[transform]") {
+  // The example of "Model Transform": scale 1.5, 45 degrees about Y, then move by (1, 2, 3).
+  const Transform transform{1.5, cgfs::MakeOYRotationMatrix(45), {1, 2, 3}};
+  CheckNear(cgfs::ToCartesian(MakeTransformMatrix(transform) * Point4({1, 0, 0})),
+            {1 + 1.5 * std::sqrt(0.5), 2, 3 + 1.5 * std::sqrt(0.5)});
+}
+
+TEST_CASE("rotating then translating is not translating then rotating", "[transform]") {
+  const glm::dmat4 R = cgfs::MakeOYRotationMatrix(90);
+  const glm::dmat4 T = cgfs::MakeTranslationMatrix({0, 0, 5});
+  CheckNear(cgfs::ToCartesian(T * R * Point4({0, 0, 1})), {-1, 0, 5});  // Figure 10-4
+  CheckNear(cgfs::ToCartesian(R * T * Point4({0, 0, 1})), {-6, 0, 0});  // Figure 10-5
+}
+
+TEST_CASE("the camera matrix of figure 10-10, by its action on vectors", "[transform]") {
+  const glm::dmat4 M = MakeCameraMatrix({-3, 1, 2}, cgfs::MakeOYRotationMatrix(-30));
+  // Rows of the spec: [[0.866025, 0, -0.5, 3.598076], [0, 1, 0, -1],
+  //                    [0.5, 0, 0.866025, -0.232051], [0, 0, 0, 1]]; its columns are
+  // what it does to the axes and to the origin.
+  CheckNear(Vec3(M * glm::dvec4(1, 0, 0, 0)), {0.866025, 0, 0.5});
+  CheckNear(Vec3(M * glm::dvec4(0, 1, 0, 0)), {0, 1, 0});
+  CheckNear(Vec3(M * glm::dvec4(0, 0, 1, 0)), {-0.5, 0, 0.866025});
+  CheckNear(Vec3(M * glm::dvec4(0, 0, 0, 1)), {3.598076, -1, -0.232051});
+  CHECK((M * glm::dvec4(0, 0, 0, 1)).w == 1);
+  // The camera's own position lands on the origin of camera space.
+  CheckNear(cgfs::ToCartesian(M * Point4({-3, 1, 2})), {0, 0, 0});
+}
+
+TEST_CASE("instance A of figure 10-10: composite matrix and vertices", "[transform]") {
+  const Scene scene = SceneTransformedCubes();
+  const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
+                       MakeTransformMatrix(scene.instances[0].transform);
+  CheckNear(Vec3(M * glm::dvec4(1, 0, 0, 0)), {0.649519, 0, 0.375});
+  CheckNear(Vec3(M * glm::dvec4(0, 1, 0, 0)), {0, 0.75, 0});
+  CheckNear(Vec3(M * glm::dvec4(0, 0, 1, 0)), {-0.375, 0, 0.649519});
+  CheckNear(Vec3(M * glm::dvec4(0, 0, 0, 1)), {-1.200962, -1, 5.080127});  // its centre
+
+  const Canvas canvas(600, 600);
+  // The spec prints x = -0.926422; worked out again, 0.866025 * 2.25 - 0.5 * 5.75 = -0.926443.
+  CheckNear(CameraSpace(scene, 0, 0), {-0.926443, -0.25, 6.104646});
+  CHECK(ProjectVertex(CameraSpace(scene, 0, 0), canvas, Viewport{}) == Point{-91, -24});
+  CheckNear(CameraSpace(scene, 0, 6), {-1.475481, -1.75, 4.055608});
+  CHECK(ProjectVertex(CameraSpace(scene, 0, 6), canvas, Viewport{}) == Point{-218, -258});
+}
+
+TEST_CASE("instance B of figure 10-10: vertices", "[transform]") {
+  const Scene scene = SceneTransformedCubes();
+  const Canvas canvas(600, 600);
+  CheckNear(CameraSpace(scene, 1, 0), {0.930608, 2.5, 5.473931});
+  CHECK(ProjectVertex(CameraSpace(scene, 1, 0), canvas, Viewport{}) == Point{102, 274});
+  CheckNear(CameraSpace(scene, 1, 4), {-0.483606, 2.5, 6.888145});
+  CHECK(ProjectVertex(CameraSpace(scene, 1, 4), canvas, Viewport{}) == Point{-42, 217});
+  // Its centre, the model's origin.
+  const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
+                       MakeTransformMatrix(scene.instances[1].transform);
+  CheckNear(Vec3(M * glm::dvec4(0, 0, 0, 1)), {0.930608, 1.5, 6.888145});
+}
