@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# End-to-end checks of the command lines: exit statuses, one-line errors, and no
+# file written on bad input. Usage: check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE
+set -u
+program=$1 compare=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect STATUS DESCRIPTION COMMAND...: the command exits with STATUS; an error
+# (status 2) is exactly one line on standard error.
+expect() {
+  local want=$1 what=$2
+  shift 2
+  "$@" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL: $what: exit status $got, expected $want"
+    cat "$work/stderr"
+    failures=$((failures + 1))
+  elif [ "$want" -eq 2 ] && [ "$(wc -l <"$work/stderr")" -ne 1 ]; then
+    echo "FAIL: $what: the error is not one line:"
+    cat "$work/stderr"
+    failures=$((failures + 1))
+  else
+    echo "ok: $what (exit $want)$( [ "$want" -eq 2 ] && echo ": $(cat "$work/stderr")")"
+  fi
+}
+
+figures=$work/figures
+expect 0 "renders one figure" "$program" --output "$figures" --figure fig-2-11
+expect 0 "renders PPM" "$program" --output "$figures" --figure fig-2-11 --format ppm
+expect 0 "renders a small canvas" "$program" --output "$work/small" --size 300x200 --figure fig-2-11
+expect 0 "--help" "$program" --help
+expect 0 "--list" "$program" --list
+
+expect 2 "unknown option" "$program" --colour red --output "$work/bad"
+expect 2 "odd size" "$program" --size 601x600 --output "$work/bad"
+expect 2 "size out of range" "$program" --size 8192x8192 --output "$work/bad"
+expect 2 "size that is not a number" "$program" --size axb --output "$work/bad"
+expect 2 "missing value" "$program" --output
+expect 2 "unknown figure" "$program" --figure fig-99 --output "$work/bad"
+expect 2 "unknown format" "$program" --format jpeg --output "$work/bad"
+expect 2 "output folder is a file" "$program" --output "$figures/fig-2-11.png"
+if [ -e "$work/bad" ]; then
+  echo "FAIL: something was written although the arguments were bad"
+  failures=$((failures + 1))
+fi
+if ! cmp -s "$figures/fig-2-11.png" <("$program" --output "$work/again" --figure fig-2-11 >/dev/null &&
+                                       cat "$work/again/fig-2-11.png"); then
+  echo "FAIL: the figure was damaged by the failed run that tried to write into it"
+  failures=$((failures + 1))
+fi
+
+expect 0 "compare: a figure with itself (PNG)" "$compare" 02-basic-rays/fig-2-11 "$figures/fig-2-11.png"
+expect 0 "compare: a figure with itself (PPM)" "$compare" 02-basic-rays/fig-2-11 "$figures/fig-2-11.ppm"
+expect 1 "compare: a different figure" "$compare" 02-basic-rays/fig-2-11-with-ground "$figures/fig-2-11.png"
+[ -f "$figures/fig-2-11.diff.png" ] || { echo "FAIL: no difference image written"; failures=$((failures + 1)); }
+expect 2 "compare: unknown figure" "$compare" 02-basic-rays/fig-99 "$figures/fig-2-11.png"
+expect 2 "compare: unknown chapter" "$compare" 99-nothing/fig-1 "$figures/fig-2-11.png"
+expect 2 "compare: missing image" "$compare" 02-basic-rays/fig-2-11 "$work/missing.png"
+expect 2 "compare: wrong size" "$compare" 02-basic-rays/fig-2-11 "$work/small/fig-2-11.png"
+echo "not an image" >"$work/text.png"
+expect 2 "compare: not an image" "$compare" 02-basic-rays/fig-2-11 "$work/text.png"
+expect 2 "compare: one argument" "$compare" 02-basic-rays/fig-2-11
+
+echo "$failures failed"
+[ "$failures" -eq 0 ]
