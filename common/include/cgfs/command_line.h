@@ -41,7 +41,6 @@ class CommandLine {
   // Returns false after printing the help for --help. Throws UsageError.
   bool Parse(int argc, const char* const* argv);
   std::string Help() const;
-  const std::string& Program() const { return program_; }
 
  private:
   struct Option {
