@@ -10,6 +10,9 @@ endfunction()
 find_package(glm QUIET CONFIG)
 cgfs_require_package(glm_FOUND libglm-dev "GLM")
 
+find_package(CLI11 QUIET CONFIG)
+cgfs_require_package(CLI11_FOUND libcli11-dev "CLI11")
+
 find_package(PkgConfig QUIET)
 cgfs_require_package(PKG_CONFIG_FOUND pkgconf "pkg-config")
 pkg_check_modules(STB QUIET IMPORTED_TARGET stb)

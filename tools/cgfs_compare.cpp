@@ -12,8 +12,11 @@
 #include <system_error>
 #include <vector>
 
-#include "cgfs/command_line.h"
+#include <CLI/CLI.hpp>
+
+#include "cgfs/arguments.h"
 #include "cgfs/compare.h"
+#include "cgfs/error.h"
 #include "cgfs/image_io.h"
 
 namespace fs = std::filesystem;
@@ -55,27 +58,31 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> arguments;
-  std::string difference_path;
-  std::string golden = CGFS_GOLDEN_DIR;
-  cgfs::CommandLine command_line(
-      "cgfs-compare",
-      "Compares ACTUAL (PNG or PPM) with EXPECTED (an image, or a figure CHAPTER/FIGURE such as\n"
-      "02-basic-rays/fig-2-11) under the reference tests' tolerance: a pixel differs when a\n"
-      "channel is off by more than 2 levels, and at most 0.01% of the pixels may differ.\n"
-      "Exit status: 0 match, 1 no match, 2 bad input.");
-  command_line.AddString("--diff", "FILE",
-                         "where to write the difference image (default ACTUAL.diff.png)",
-                         &difference_path);
-  command_line.AddString("--golden", "DIR", "folder of the golden images (default: this repo's)",
-                         &golden);
-  command_line.SetPositionals({"EXPECTED", "ACTUAL"}, &arguments);
-  try {
-    if (!command_line.Parse(argc, argv)) {
+  return cgfs::RunReportingErrors("cgfs-compare", [&] {
+    std::string expected_argument;
+    std::string actual_argument;
+    std::string difference_path;
+    std::string golden = CGFS_GOLDEN_DIR;
+    CLI::App app(
+        "Compares ACTUAL (PNG or PPM) with EXPECTED (an image, or a figure CHAPTER/FIGURE such as\n"
+        "02-basic-rays/fig-2-11) under the reference tests' tolerance: a pixel differs when a\n"
+        "channel is off by more than 2 levels, and at most 0.01% of the pixels may differ.\n"
+        "Exit status: 0 match, 1 no match, 2 bad input.",
+        "cgfs-compare");
+    app.add_option("EXPECTED", expected_argument, "the reference: CHAPTER/FIGURE or an image file")
+        ->required();
+    app.add_option("ACTUAL", actual_argument, "your image, PNG or PPM")->required();
+    app.add_option("--diff", difference_path,
+                   "where to write the difference image (default ACTUAL.diff.png)")
+        ->type_name("FILE");
+    app.add_option("--golden", golden, "folder of the golden images (default: this repo's)")
+        ->type_name("DIR");
+    if (!cgfs::ParseArguments(app, argc, argv)) {
       return 0;
     }
-    const fs::path expected_file = ResolveExpected(arguments[0], golden);
-    const fs::path actual_file = arguments[1];
+
+    const fs::path expected_file = ResolveExpected(expected_argument, golden);
+    const fs::path actual_file = actual_argument;
     if (difference_path.empty()) {
       difference_path = (actual_file.parent_path() / actual_file.stem()).string() + ".diff.png";
     }
@@ -96,11 +103,5 @@ int main(int argc, char** argv) {
               << "difference image: " << difference_path
               << " (red: beyond tolerance, orange: within it)\n";
     return comparison.passed ? 0 : 1;
-  } catch (const cgfs::UsageError& error) {
-    std::cerr << "cgfs-compare: error: " << error.what() << " (try --help)\n";
-    return 2;
-  } catch (const cgfs::Error& error) {
-    std::cerr << "cgfs-compare: error: " << error.what() << "\n";
-    return 2;
-  }
+  });
 }

@@ -1,4 +1,4 @@
-// Spec §1.1: the canvas coordinates of book chapter 1.
+// The canvas coordinates of book chapter 1 (docs/conventions.md, "The canvas").
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
@@ -9,7 +9,7 @@ using cgfs::Canvas;
 using cgfs::Rgb8;
 using cgfs::ScreenPoint;
 
-TEST_CASE("canvas corners and centre map to memory as spec 1.1 says", "[canvas]") {
+TEST_CASE("canvas corners and centre map to memory with Sy = Ch/2 - y - 1", "[canvas]") {
   const Canvas canvas(600, 600);
   CHECK(canvas.ToScreen(-300, 299) == ScreenPoint{0, 0});
   CHECK(canvas.ToScreen(0, 0) == ScreenPoint{300, 299});

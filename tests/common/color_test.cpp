@@ -1,4 +1,4 @@
-// Spec §1.3 and §2.3: colour arithmetic, and clamp-then-round on write.
+// Colour arithmetic, and clamp-then-round on write.
 #include <catch2/catch.hpp>
 
 #include "cgfs/canvas.h"

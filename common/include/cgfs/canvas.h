@@ -29,8 +29,9 @@ class Canvas {
   int Width() const { return image_.Width(); }
   int Height() const { return image_.Height(); }
 
-  // Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (spec §1.1: the book's Ch/2 - y would put
-  // y = Ch/2 on row 0 and y = -Ch/2 outside). Empty for pixels off the canvas.
+  // Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (docs/conventions.md, "The canvas": the book's
+  // Ch/2 - y would put y = Ch/2 on row 0 and y = -Ch/2 outside). Empty for pixels off
+  // the canvas.
   std::optional<ScreenPoint> ToScreen(int x, int y) const;
 
   // The book's only drawing primitive: clamps and rounds the colour, and

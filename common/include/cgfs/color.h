@@ -22,7 +22,7 @@ inline constexpr Color kBlack{0, 0, 0};
 inline constexpr Color kWhite{255, 255, 255};
 
 // One 8-bit channel as stored in an image: clamp to [0, 255], then round to the
-// nearest integer (spec §1.3: std::lround after clamping).
+// nearest integer with std::lround (docs/conventions.md, "Colours").
 std::uint8_t ToChannel(double value);
 
 }  // namespace cgfs

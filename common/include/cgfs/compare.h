@@ -1,4 +1,4 @@
-// Comparing two images under the project's one tolerance (docs/tolerance.md).
+// Comparing two images under the project's one tolerance (docs/testing.md, "The tolerance").
 // Used by the golden-image tests and by tools/cgfs-compare for students.
 #pragma once
 

@@ -1,14 +1,29 @@
+// Errors the user can fix, and the one place every program reports them.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 
 namespace cgfs {
 
 // A problem with the user's input (a file, a number, an option). Its message is
-// one line, written so that main() can print it as it is.
+// one line, written so that it can be printed as it is.
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// A mistake on the command line; the report adds "(try --help)".
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Runs a program's body and turns whatever goes wrong into one line on standard
+// error, "PROGRAM: error: ...", and exit status 2: our own errors, the command-line
+// library's, the file system's, running out of memory, and a standard output that
+// cannot be written (a full disk, a closed pipe). Otherwise returns the body's status.
+int RunReportingErrors(std::string_view program, const std::function<int()>& body);
 
 }  // namespace cgfs

@@ -1,0 +1,45 @@
+// The program every chapter builds from its main.cpp: it draws the chapter's
+// figures into out/<chapter>/, with the options every chapter shares (--output,
+// --size, --figure, --format, --list, --help).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cgfs/figure.h"
+
+namespace CLI {
+class App;
+}
+
+namespace cgfs {
+
+class ChapterProgram {
+ public:
+  ChapterProgram(std::string chapter, std::string description);
+  ~ChapterProgram();
+
+  // Where a chapter adds an option of its own, when the option is the chapter's
+  // own idea (chapter 5's optimisations, for example), never to pick a scene.
+  CLI::App& Options();
+
+  // Parses the arguments, then draws and writes the selected figures, printing each
+  // file and its render time. Returns the exit status: 0, or 2 with a one-line error
+  // on bad input or a file that cannot be written (nothing is written on bad input).
+  int Run(int argc, const char* const* argv, std::vector<Figure> (*figures)());
+
+ private:
+  int Parse(int argc, const char* const* argv);
+  int DrawFigures(const std::vector<Figure>& figures) const;
+
+  std::string chapter_;
+  std::unique_ptr<CLI::App> options_;
+  std::string output_;
+  std::string size_ = "600x600";
+  std::string format_ = "png";
+  std::vector<std::string> selected_;
+  bool list_ = false;
+};
+
+}  // namespace cgfs

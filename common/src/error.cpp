@@ -1,0 +1,50 @@
+#include "cgfs/error.h"
+
+#include <CLI/Error.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <new>
+#include <string>
+
+namespace cgfs {
+
+namespace {
+
+// Everything a program printed must have reached its destination: `--list > /dev/full`
+// is an error, not a silent success.
+void FlushStandardOutput() {
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    throw Error("cannot write to standard output");
+  }
+}
+
+int Report(std::string_view program, const std::string& message, bool usage) {
+  std::cerr << program << ": error: " << message << (usage ? " (try --help)" : "") << "\n";
+  return 2;
+}
+
+}  // namespace
+
+int RunReportingErrors(std::string_view program, const std::function<int()>& body) {
+  try {
+    const int status = body();
+    FlushStandardOutput();
+    return status;
+  } catch (const UsageError& error) {
+    return Report(program, error.what(), true);
+  } catch (const Error& error) {
+    return Report(program, error.what(), false);
+  } catch (const CLI::ParseError& error) {
+    return Report(program, error.what(), true);
+  } catch (const std::filesystem::filesystem_error& error) {
+    // Its message names the operation and the path: "filesystem error: ... [path]".
+    return Report(program, error.what(), false);
+  } catch (const std::bad_alloc&) {
+    return Report(program, "out of memory", false);
+  }
+}
+
+}  // namespace cgfs

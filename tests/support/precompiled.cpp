@@ -1,0 +1,1 @@
+// Compiles the precompiled header (Catch2) that every test program reuses.
