@@ -8,7 +8,6 @@
 
 #include "cgfs/canvas.h"
 #include "cgfs/color.h"
-#include "cgfs/figure.h"
 #include "cgfs/math.h"
 
 using cgfs::Canvas;
@@ -48,10 +47,3 @@ Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const S
 
 // The main loop (Listing 2-2): one ray per canvas pixel, from the camera at the origin.
 void RenderScene(const Scene& scene, Canvas& canvas);
-
-// The scenes of this chapter's figures (spec §3.3).
-Scene SceneThreeSpheres();
-Scene SceneWithGround();
-
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();

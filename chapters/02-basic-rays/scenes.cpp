@@ -1,6 +1,6 @@
-#include "raytracer.h"
+#include "scenes.h"
 
-// The scene of "Rendering our First Spheres" (spec §3.3): three spheres on a white background.
+// The scene of "Rendering our First Spheres": three spheres on a white background.
 Scene SceneThreeSpheres() {
   Scene scene;
   scene.background_color = cgfs::kWhite;

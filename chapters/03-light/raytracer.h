@@ -8,7 +8,6 @@
 
 #include "cgfs/canvas.h"
 #include "cgfs/color.h"
-#include "cgfs/figure.h"
 #include "cgfs/math.h"
 
 using cgfs::Canvas;
@@ -65,11 +64,3 @@ Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, const S
 
 // The main loop (Listing 2-2): one ray per canvas pixel, from the camera at the origin.
 void RenderScene(const Scene& scene, Canvas& canvas);
-
-// The scenes of this chapter's figures (spec §4.4): matte spheres (Figure 3-7), and
-// the same with specular exponents (Figure 3-16).
-Scene SceneDiffuse();
-Scene SceneSpecular();
-
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();

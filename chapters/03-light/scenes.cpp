@@ -1,4 +1,4 @@
-#include "raytracer.h"
+#include "scenes.h"
 
 namespace {
 

@@ -8,7 +8,6 @@
 
 #include "cgfs/canvas.h"
 #include "cgfs/color.h"
-#include "cgfs/figure.h"
 #include "cgfs/math.h"
 
 using cgfs::Canvas;
@@ -82,16 +81,3 @@ void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas);
 
 // The book's advice: three bounces are enough ("Rendering with Reflections").
 inline constexpr int kDefaultRecursionDepth = 3;
-
-// Where the blue and green spheres stand (spec §5.3): as in chapters 2-3 and the
-// author's demos, or as the book's chapter 4 listing prints them.
-enum class SphereLayout { kDemo, kBook };
-
-// The scenes of this chapter's figures: the chapter 3 scene with shadows on white
-// (Figure 4-4), and with reflective spheres on black (Figures 4-6 to 4-8).
-Scene SceneShadows(SphereLayout layout = SphereLayout::kDemo);
-Scene SceneReflections(SphereLayout layout = SphereLayout::kDemo);
-
-// Every figure this chapter draws; the reflections figure uses recursion_depth.
-std::vector<cgfs::Figure> Figures(int recursion_depth = kDefaultRecursionDepth,
-                                  SphereLayout layout = SphereLayout::kDemo);

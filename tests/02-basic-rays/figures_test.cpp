@@ -1,9 +1,9 @@
-// Spec §3.3-3.4: the chapter's figures, pixel by pixel and as whole images.
+// The chapter's figures, pixel by pixel and as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "printing.h"
-#include "raytracer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;

@@ -1,4 +1,4 @@
-// Spec §3.2: TraceRay and the main loop of chapter 2.
+// TraceRay (Listing 2-4) and the main loop of chapter 2 (Listing 2-2).
 #include <catch2/catch.hpp>
 
 #include "printing.h"

@@ -1,4 +1,4 @@
-// Spec §3.4: CanvasToViewport and IntersectRaySphere, with hand-checked values.
+// CanvasToViewport and IntersectRaySphere, with hand-checked values.
 // Chapters 3 and 4 keep both functions unchanged and run these tests too.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Spec §4.5: ComputeLighting with hand-checked values. The scenes have no spheres,
+// ComputeLighting with hand-checked values. The scenes have no spheres,
 // so chapter 4's shadow rays find nothing and it runs these tests unchanged.
 #include <catch2/catch.hpp>
 

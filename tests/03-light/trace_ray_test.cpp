@@ -1,4 +1,4 @@
-// Spec §4.3: TraceRay lights what it hits.
+// TraceRay (Listing 3-3) lights what it hits.
 #include <catch2/catch.hpp>
 
 #include "printing.h"

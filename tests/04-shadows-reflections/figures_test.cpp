@@ -1,9 +1,9 @@
-// Spec §5.3-5.4: the chapter's figures, pixel by pixel and as whole images.
+// The chapter's figures, pixel by pixel and as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "printing.h"
-#include "raytracer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;
@@ -86,13 +86,29 @@ TEST_CASE("depth 1 and depth 3 differ only where a reflection shows another sphe
 }
 
 TEST_CASE("the book's layout moves blue to the upper left", "[figures]") {
-  const Canvas demo = RenderFigureNamed(Figures(3, SphereLayout::kDemo), "fig-4-8-reflections");
-  const Canvas book = RenderFigureNamed(Figures(3, SphereLayout::kBook), "fig-4-8-reflections");
+  const Canvas demo = RenderFigureNamed(Figures(), "fig-4-8-reflections");
+  const Canvas book = RenderFigureNamed(Figures(), "fig-4-8-reflections-book-layout");
   CHECK(demo.GetPixel(-250, 150) == Rgb8{0, 0, 0});
   const Rgb8 blue = book.GetPixel(-250, 150);
   CHECK(blue.b > 100);
   CHECK(blue.r < blue.b);
   CHECK(blue.g < blue.b);
+}
+
+TEST_CASE("five bounces change only pixels that three bounces already reflect", "[figures]") {
+  const Canvas depth3 = RenderFigureNamed(Figures(), "fig-4-8-reflections");
+  const Canvas depth5 = RenderFigureNamed(Figures(), "recursion-depth-5");
+  const Canvas depth0 = RenderFigureNamed(Figures(), "recursion-depth-0");
+  long differing = 0;
+  for (int x = -300; x < 300; ++x) {
+    for (int y = -300; y < 300; ++y) {
+      if (depth3.GetPixel(x, y) != depth5.GetPixel(x, y)) {
+        ++differing;
+        CHECK(depth0.GetPixel(x, y) != depth3.GetPixel(x, y));  // a reflective pixel
+      }
+    }
+  }
+  CHECK(differing > 0);
 }
 
 TEST_CASE("fig-4-4-shadows matches its golden image", "[golden]") {
@@ -113,4 +129,12 @@ TEST_CASE("fig-4-6-recursion-depth-1 matches its golden image", "[golden]") {
 
 TEST_CASE("recursion-depth-0 matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "recursion-depth-0");
+}
+
+TEST_CASE("recursion-depth-5 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "recursion-depth-5");
+}
+
+TEST_CASE("fig-4-8-reflections-book-layout matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-4-8-reflections-book-layout");
 }

@@ -1,17 +1,17 @@
-// Spec §5.4: ClosestIntersection, shadows, ReflectRay and the recursive TraceRay.
+// ClosestIntersection, shadows, ReflectRay and the recursive TraceRay.
 #include <catch2/catch.hpp>
 
 #include <utility>
 #include <vector>
 
 #include "printing.h"
-#include "raytracer.h"
+#include "scenes.h"
 
 using Catch::Detail::Approx;
 
 namespace {
 
-Scene SceneWithLights(std::vector<Light> lights) {
+Scene SceneLitBy(std::vector<Light> lights) {
   Scene scene;
   scene.lights = std::move(lights);
   return scene;
@@ -41,7 +41,7 @@ TEST_CASE("TraceRay lights the hit point with the sphere's unit normal", "[equat
   // A directional light towards the camera; the central ray hits the sphere at
   // (0, 0, 4) where N = (0, 0, -1): full intensity. A radius of 2 checks that N
   // is normalised (an unnormalised N would double the diffuse term).
-  Scene scene = SceneWithLights({{LightType::kDirectional, 0.5, {}, {0, 0, -1}}});
+  Scene scene = SceneLitBy({{LightType::kDirectional, 0.5, {}, {0, 0, -1}}});
   scene.spheres = {{{0, 0, 6}, 2, {200, 100, 50}}};
   CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, 0, scene) == Color(100, 50, 25));
   // Seen from above at (0, 2, 6) the normal is (0, 1, 0): perpendicular to the light.
@@ -77,7 +77,7 @@ TEST_CASE("ReflectRay mirrors a vector about a unit normal", "[equations]") {
 
 TEST_CASE("a point light's shadow ray stops at the light (t_max = 1)", "[equations]") {
   // The light is at (0, 2, 0), so L = (0, 2, 0) from P = (0, 0, 0): t = 1 at the light.
-  Scene scene = SceneWithLights({{LightType::kPoint, 1.0, {0, 2, 0}, {}}});
+  Scene scene = SceneLitBy({{LightType::kPoint, 1.0, {0, 2, 0}, {}}});
   scene.spheres = {{{0, 5, 0}, 1, cgfs::kRed}};  // beyond the light: t = 2 .. 3
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 1.0);
   scene.spheres = {{{0, 1, 0}, 0.5, cgfs::kRed}};  // between P and the light: t = 0.25 .. 0.75
@@ -85,7 +85,7 @@ TEST_CASE("a point light's shadow ray stops at the light (t_max = 1)", "[equatio
 }
 
 TEST_CASE("a directional light's shadow ray has no end (t_max = inf)", "[equations]") {
-  Scene scene = SceneWithLights({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
+  Scene scene = SceneLitBy({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
   scene.spheres = {{{0, 1000, 0}, 1, cgfs::kRed}};
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 0.0);
   scene.spheres = {{{0, -1000, 0}, 1, cgfs::kRed}};  // behind P: t < 0
@@ -94,7 +94,7 @@ TEST_CASE("a directional light's shadow ray has no end (t_max = inf)", "[equatio
 
 TEST_CASE("shadow rays start at epsilon, so a point does not shadow itself", "[equations]") {
   // P lies on the sphere (up to rounding): its shadow ray finds the sphere at t ~ 0.
-  Scene scene = SceneWithLights({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
+  Scene scene = SceneLitBy({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
   scene.spheres = {{{0, -1, 0}, 1, cgfs::kRed}};
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 1.0);
   scene.epsilon = 0;
@@ -118,7 +118,7 @@ TEST_CASE("recursion depth 0 returns the local colour", "[equations]") {
 TEST_CASE("the reflection blend is local * (1 - r) + reflected * r", "[equations]") {
   // A black half-mirror straight ahead; its reflection looks back past the camera
   // at the white background: 0 * 0.5 + 255 * 0.5.
-  Scene scene = SceneWithLights({{LightType::kAmbient, 1.0, {}, {}}});
+  Scene scene = SceneLitBy({{LightType::kAmbient, 1.0, {}, {}}});
   scene.background_color = cgfs::kWhite;
   scene.spheres = {{{0, 0, 5}, 1, cgfs::kBlack, -1, 0.5}};
   CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, 1, scene) == Color(127.5, 127.5, 127.5));
@@ -128,7 +128,7 @@ TEST_CASE("the reflection blend is local * (1 - r) + reflected * r", "[equations
 }
 
 TEST_CASE("two mirrors facing each other stop at the recursion limit", "[equations]") {
-  Scene scene = SceneWithLights({{LightType::kAmbient, 1.0, {}, {}}});
+  Scene scene = SceneLitBy({{LightType::kAmbient, 1.0, {}, {}}});
   scene.spheres = {{{0, 0, 5}, 1, cgfs::kRed, -1, 1.0}, {{0, 0, -5}, 1, cgfs::kBlue, -1, 1.0}};
   // The bounces alternate between the two; with r = 1 only the last sphere's own
   // colour remains: red after an even number of bounces, blue after an odd one.
