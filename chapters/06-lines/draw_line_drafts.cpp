@@ -1,11 +1,8 @@
-// The versions of DrawLine that chapter 6 writes before Listing 6-2, in the order
-// of "Drawing Lines" and "Drawing Lines with Any Slope". Each has a flaw the
-// chapter goes on to fix; --draw-line renders what each one draws.
+#include "draw_line_drafts.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <utility>
-
-#include "rasterizer.h"
 
 namespace {
 
@@ -19,7 +16,9 @@ void PutPixelAt(double x, double y, const Color& color, Canvas& canvas) {
   }
 }
 
-// First version: y = ax + b for every x, assuming x0 < x1.
+}  // namespace
+
+// First version.
 void DrawLineSlopeIntercept(Point P0, Point P1, const Color& color, Canvas& canvas) {
   const double a = static_cast<double>(P1.y - P0.y) / (P1.x - P0.x);
   const double b = P0.y - a * P0.x;
@@ -29,7 +28,7 @@ void DrawLineSlopeIntercept(Point P0, Point P1, const Color& color, Canvas& canv
   }
 }
 
-// Second version: y(x + 1) = y(x) + a, no multiplication per pixel; still x0 < x1.
+// Second version.
 void DrawLineIncremental(Point P0, Point P1, const Color& color, Canvas& canvas) {
   const double a = static_cast<double>(P1.y - P0.y) / (P1.x - P0.x);
   double y = P0.y;
@@ -39,8 +38,7 @@ void DrawLineIncremental(Point P0, Point P1, const Color& color, Canvas& canvas)
   }
 }
 
-// Third version: swap the end points so that x0 < x1. Any direction now, but one
-// pixel per column: steep lines get gaps (Figures 6-3 and 6-4).
+// Third version.
 void DrawLineLeftToRight(Point P0, Point P1, const Color& color, Canvas& canvas) {
   if (P0.x > P1.x) {
     std::swap(P0, P1);
@@ -53,8 +51,7 @@ void DrawLineLeftToRight(Point P0, Point P1, const Color& color, Canvas& canvas)
   }
 }
 
-// The same with x and y swapped: x = f(y). Good for (0,0)-(50,100), gaps for
-// (0,0)-(100,50).
+// The same with x and y swapped. Good for (0,0)-(50,100), gaps for (0,0)-(100,50).
 void DrawLineXOfY(Point P0, Point P1, const Color& color, Canvas& canvas) {
   if (P0.y > P1.y) {
     std::swap(P0, P1);
@@ -67,9 +64,7 @@ void DrawLineXOfY(Point P0, Point P1, const Color& color, Canvas& canvas) {
   }
 }
 
-// Listing 6-1: both versions, chosen by which of dx and dy is larger. It works,
-// but the choice, the arithmetic and the drawing are tangled: Listing 6-2 pulls
-// the arithmetic out into Interpolate.
+// Listing 6-1.
 void DrawLineBothCases(Point P0, Point P1, const Color& color, Canvas& canvas) {
   const int dx = P1.x - P0.x;
   const int dy = P1.y - P0.y;
@@ -96,53 +91,4 @@ void DrawLineBothCases(Point P0, Point P1, const Color& color, Canvas& canvas) {
       x = x + a;
     }
   }
-}
-
-}  // namespace
-
-void DrawLineDraftVersion(DrawLineDraft version, Point P0, Point P1, const Color& color,
-                          Canvas& canvas) {
-  switch (version) {
-    case DrawLineDraft::kSlopeIntercept:
-      return DrawLineSlopeIntercept(P0, P1, color, canvas);
-    case DrawLineDraft::kIncremental:
-      return DrawLineIncremental(P0, P1, color, canvas);
-    case DrawLineDraft::kLeftToRight:
-      return DrawLineLeftToRight(P0, P1, color, canvas);
-    case DrawLineDraft::kXOfY:
-      return DrawLineXOfY(P0, P1, color, canvas);
-    case DrawLineDraft::kBothCases:
-      return DrawLineBothCases(P0, P1, color, canvas);
-  }
-}
-
-std::vector<DrawLineDraft> AllDrafts() {
-  return {DrawLineDraft::kSlopeIntercept, DrawLineDraft::kIncremental, DrawLineDraft::kLeftToRight,
-          DrawLineDraft::kXOfY, DrawLineDraft::kBothCases};
-}
-
-std::string DraftName(DrawLineDraft version) {
-  switch (version) {
-    case DrawLineDraft::kSlopeIntercept:
-      return "slope-intercept";
-    case DrawLineDraft::kIncremental:
-      return "incremental";
-    case DrawLineDraft::kLeftToRight:
-      return "left-to-right";
-    case DrawLineDraft::kXOfY:
-      return "x-of-y";
-    case DrawLineDraft::kBothCases:
-      return "both-cases";
-  }
-  return "";
-}
-
-bool DraftFromName(const std::string& name, DrawLineDraft* version) {
-  for (const DrawLineDraft draft : AllDrafts()) {
-    if (DraftName(draft) == name) {
-      *version = draft;
-      return true;
-    }
-  }
-  return false;
 }

@@ -1,4 +1,4 @@
-#include "rasterizer.h"
+#include "lines.h"
 
 #include <cstdlib>
 #include <utility>
@@ -20,7 +20,7 @@ std::vector<double> Interpolate(int i0, double d0, int i1, double d1) {
 
 // Listing 6-2. Pick the independent variable with more distinct values, so every
 // step along it draws exactly one pixel and the segment has no gaps. Interpolated
-// coordinates are truncated toward zero (spec §1.1).
+// coordinates are truncated toward zero (docs/conventions.md, "Rounding").
 void DrawLine(Point P0, Point P1, const Color& color, Canvas& canvas) {
   if (std::abs(P1.x - P0.x) > std::abs(P1.y - P0.y)) {
     // The line is horizontal-ish: y = f(x). Make sure x0 < x1.

@@ -1,32 +1,17 @@
-// Chapter 6, "Lines": renders the chapter's figures into out/06-lines/.
-#include <string>
-#include <vector>
-
-#include "cgfs/chapter_main.h"
-#include "rasterizer.h"
+// The chapter's program: draws the chapter's figures into out/<chapter>/ (see the
+// chapter's README.md, or run it with --help). This file is the same in every
+// chapter: the figures and the one-line description come from scenes.h, and a
+// chapter with command-line options of its own declares them in options.h.
+#include "cgfs/chapter_program.h"
+#include "scenes.h"
+#if __has_include("options.h")
+#include "options.h"
+#endif
 
 int main(int argc, char** argv) {
-  cgfs::ChapterProgram program("06-lines",
-                               "Chapter 6, Lines: DrawLine for any slope, and Interpolate.");
-  std::vector<std::string> draft_names;
-  program.Options().AddStrings(
-      "--draw-line", "VERSION",
-      "also draw all-directions-VERSION with one of the chapter's earlier DrawLine versions: "
-      "slope-intercept, incremental, left-to-right, x-of-y, both-cases, or all (repeatable)",
-      &draft_names);
-  return program.Run(argc, argv, [&] {
-    std::vector<DrawLineDraft> drafts;
-    for (const std::string& name : draft_names) {
-      DrawLineDraft draft;
-      if (name == "all") {
-        const std::vector<DrawLineDraft> all = AllDrafts();
-        drafts.insert(drafts.end(), all.begin(), all.end());
-      } else if (DraftFromName(name, &draft)) {
-        drafts.push_back(draft);
-      } else {
-        throw cgfs::UsageError("--draw-line: no version named '" + name + "'");
-      }
-    }
-    return Figures(drafts);
-  });
+  cgfs::ChapterProgram program(CGFS_CHAPTER, kChapterDescription);
+#if __has_include("options.h")
+  AddChapterOptions(program.Options());
+#endif
+  return program.Run(argc, argv, Figures);
 }

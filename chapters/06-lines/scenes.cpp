@@ -1,4 +1,6 @@
-#include "rasterizer.h"
+#include "scenes.h"
+
+#include "draw_line_drafts.h"
 
 namespace {
 
@@ -13,14 +15,15 @@ constexpr Point kStarTips[] = {{250, 0},  {231, 96},   {177, 177},   {96, 231},
                                {-250, 0}, {-231, -96}, {-177, -177}, {-96, -231},
                                {0, -250}, {96, -231},  {177, -177},  {231, -96}};
 
-template <typename DrawFunction>
-void DrawStar(DrawFunction draw) {
+using DrawLineFunction = void (*)(Point, Point, const Color&, Canvas&);
+
+void DrawStar(DrawLineFunction draw_line, Canvas& canvas) {
   bool outwards = true;
   for (const Point& tip : kStarTips) {
     if (outwards) {
-      draw(Point{0, 0}, tip);
+      draw_line(Point{0, 0}, tip, cgfs::kBlack, canvas);
     } else {
-      draw(tip, Point{0, 0});
+      draw_line(tip, Point{0, 0}, cgfs::kBlack, canvas);
     }
     outwards = !outwards;
   }
@@ -28,19 +31,14 @@ void DrawStar(DrawFunction draw) {
 
 }  // namespace
 
-std::vector<cgfs::Figure> Figures(const std::vector<DrawLineDraft>& drafts) {
-  std::vector<cgfs::Figure> figures = {
+std::vector<cgfs::Figure> Figures() {
+  return {
       {"fig-6-1", "the shallow segment, drawn left to right with y = f(x) (Figure 6-1)",
-       [](Canvas& canvas) {
-         DrawLineDraftVersion(DrawLineDraft::kLeftToRight, kShallowFrom, kShallowTo, cgfs::kBlack,
-                              canvas);
-       }},
+       [](Canvas& canvas) { DrawLineLeftToRight(kShallowFrom, kShallowTo, cgfs::kBlack, canvas); }},
       {"fig-6-3", "both segments with y = f(x): the steep one falls apart (Figure 6-3)",
        [](Canvas& canvas) {
-         DrawLineDraftVersion(DrawLineDraft::kLeftToRight, kShallowFrom, kShallowTo, cgfs::kBlack,
-                              canvas);
-         DrawLineDraftVersion(DrawLineDraft::kLeftToRight, kSteepFrom, kSteepTo, cgfs::kBlack,
-                              canvas);
+         DrawLineLeftToRight(kShallowFrom, kShallowTo, cgfs::kBlack, canvas);
+         DrawLineLeftToRight(kSteepFrom, kSteepTo, cgfs::kBlack, canvas);
        }},
       {"fig-6-5", "both segments with the final DrawLine (Figure 6-5)",
        [](Canvas& canvas) {
@@ -48,19 +46,21 @@ std::vector<cgfs::Figure> Figures(const std::vector<DrawLineDraft>& drafts) {
          DrawLine(kSteepFrom, kSteepTo, cgfs::kBlack, canvas);
        }},
       {"all-directions", "sixteen directions, both end-point orders, with the final DrawLine",
-       [](Canvas& canvas) {
-         DrawStar([&](Point P0, Point P1) { DrawLine(P0, P1, cgfs::kBlack, canvas); });
-       }},
+       [](Canvas& canvas) { DrawStar(DrawLine, canvas); }},
+      {"all-directions-slope-intercept",
+       "the same with DrawLineSlopeIntercept: nothing from right to left, nothing vertical",
+       [](Canvas& canvas) { DrawStar(DrawLineSlopeIntercept, canvas); }},
+      {"all-directions-incremental",
+       "the same with DrawLineIncremental: y += a per pixel, the same gaps",
+       [](Canvas& canvas) { DrawStar(DrawLineIncremental, canvas); }},
+      {"all-directions-left-to-right",
+       "the same with DrawLineLeftToRight: every direction, but steep lines break up",
+       [](Canvas& canvas) { DrawStar(DrawLineLeftToRight, canvas); }},
+      {"all-directions-x-of-y",
+       "the same with DrawLineXOfY: steep lines whole, shallow ones broken",
+       [](Canvas& canvas) { DrawStar(DrawLineXOfY, canvas); }},
+      {"all-directions-both-cases",
+       "the same with DrawLineBothCases (Listing 6-1): every line whole",
+       [](Canvas& canvas) { DrawStar(DrawLineBothCases, canvas); }},
   };
-  for (const DrawLineDraft draft : drafts) {
-    figures.push_back(
-        {"all-directions-" + DraftName(draft),
-         "sixteen directions drawn with the draft DrawLine '" + DraftName(draft) + "'",
-         [draft](Canvas& canvas) {
-           DrawStar([&](Point P0, Point P1) {
-             DrawLineDraftVersion(draft, P0, P1, cgfs::kBlack, canvas);
-           });
-         }});
-  }
-  return figures;
 }

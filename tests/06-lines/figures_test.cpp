@@ -1,9 +1,9 @@
-// Spec §7.3: the chapter's figures as whole images.
+// The chapter's figures as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "pixels.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::test::CheckAgainstGolden;
 using cgfs::test::DrawnPixels;
@@ -25,10 +25,18 @@ TEST_CASE("the star has its centre and all sixteen tips", "[figures]") {
   }
 }
 
-TEST_CASE("a draft asked for on the command line adds its own figure", "[figures]") {
-  const auto figures = Figures({DrawLineDraft::kXOfY});
-  REQUIRE(figures.size() == Figures().size() + 1);
-  CHECK(figures.back().name == "all-directions-x-of-y");
+TEST_CASE("every draft of DrawLine has a figure, and each draws what it gets wrong", "[figures]") {
+  const auto pixels = [](const char* name) {
+    return DrawnPixels(RenderFigureNamed(Figures(), name)).size();
+  };
+  const std::size_t whole = pixels("all-directions");
+  // The first two drafts draw only the segments given left to right, and the
+  // left-to-right draft draws steep segments with gaps: fewer pixels than the star.
+  CHECK(pixels("all-directions-slope-intercept") < whole);
+  CHECK(pixels("all-directions-incremental") < whole);
+  CHECK(pixels("all-directions-left-to-right") < whole);
+  CHECK(pixels("all-directions-x-of-y") < whole);
+  CHECK(pixels("all-directions-both-cases") == whole);
 }
 
 TEST_CASE("fig-6-1 matches its golden image", "[golden]") {
@@ -45,4 +53,24 @@ TEST_CASE("fig-6-5 matches its golden image", "[golden]") {
 
 TEST_CASE("all-directions matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions");
+}
+
+TEST_CASE("all-directions-slope-intercept matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions-slope-intercept");
+}
+
+TEST_CASE("all-directions-incremental matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions-incremental");
+}
+
+TEST_CASE("all-directions-left-to-right matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions-left-to-right");
+}
+
+TEST_CASE("all-directions-x-of-y matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions-x-of-y");
+}
+
+TEST_CASE("all-directions-both-cases matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "all-directions-both-cases");
 }
