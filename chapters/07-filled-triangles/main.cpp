@@ -1,10 +1,17 @@
-// Chapter 7, "Filled Triangles": renders the chapter's figures into out/07-filled-triangles/.
-#include "cgfs/chapter_main.h"
-#include "rasterizer.h"
+// The chapter's program: draws the chapter's figures into out/<chapter>/ (see the
+// chapter's README.md, or run it with --help). This file is the same in every
+// chapter: the figures and the one-line description come from scenes.h, and a
+// chapter with command-line options of its own declares them in options.h.
+#include "cgfs/chapter_program.h"
+#include "scenes.h"
+#if __has_include("options.h")
+#include "options.h"
+#endif
 
 int main(int argc, char** argv) {
-  cgfs::ChapterProgram program(
-      "07-filled-triangles",
-      "Chapter 7, Filled Triangles: wireframe triangles, and filled ones as horizontal segments.");
-  return program.Run(argc, argv, [] { return Figures(); });
+  cgfs::ChapterProgram program(CGFS_CHAPTER, kChapterDescription);
+#if __has_include("options.h")
+  AddChapterOptions(program.Options());
+#endif
+  return program.Run(argc, argv, Figures);
 }

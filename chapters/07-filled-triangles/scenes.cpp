@@ -1,4 +1,4 @@
-#include "rasterizer.h"
+#include "scenes.h"
 
 namespace {
 

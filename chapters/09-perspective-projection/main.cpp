@@ -1,23 +1,17 @@
-// Chapter 9, "Perspective Projection": renders the chapter's figures into
-// out/09-perspective-projection/.
-#include <string>
-
-#include "cgfs/chapter_main.h"
-#include "rasterizer.h"
+// The chapter's program: draws the chapter's figures into out/<chapter>/ (see the
+// chapter's README.md, or run it with --help). This file is the same in every
+// chapter: the figures and the one-line description come from scenes.h, and a
+// chapter with command-line options of its own declares them in options.h.
+#include "cgfs/chapter_program.h"
+#include "scenes.h"
+#if __has_include("options.h")
+#include "options.h"
+#endif
 
 int main(int argc, char** argv) {
-  cgfs::ChapterProgram program(
-      "09-perspective-projection",
-      "Chapter 9, Perspective Projection: 3-D points onto the canvas, and a wireframe cube.");
-  std::string cube = "demo";
-  program.Options().AddString("--cube", "demo|book",
-                              "the demo's cube (default) or the book listing's, which mostly "
-                              "falls off the canvas",
-                              &cube);
-  return program.Run(argc, argv, [&] {
-    if (cube != "demo" && cube != "book") {
-      throw cgfs::UsageError("--cube: '" + cube + "' is not demo or book");
-    }
-    return Figures(cube == "book" ? CubeVariant::kBook : CubeVariant::kDemo);
-  });
+  cgfs::ChapterProgram program(CGFS_CHAPTER, kChapterDescription);
+#if __has_include("options.h")
+  AddChapterOptions(program.Options());
+#endif
+  return program.Run(argc, argv, Figures);
 }

@@ -1,4 +1,4 @@
-#include "rasterizer.h"
+#include "scenes.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
@@ -46,10 +46,10 @@ Scene SceneTwoCubes() {
 // chapters 11 to 14.
 Scene SceneTransformedCubes() {
   Scene scene;
-  scene.camera = {{-3, 1, 2}, cgfs::MakeOYRotationMatrix(-30)};
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
   scene.instances = {
       {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, cgfs::MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+      {&CubeModel(), {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
   };
   return scene;
 }

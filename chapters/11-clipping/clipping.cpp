@@ -1,9 +1,7 @@
-// Chapter 11, "Clipping": the clipping volume, and clipping at the level of whole
-// objects, of triangles and of vertices.
+#include "clipping.h"
+
 #include <algorithm>
 #include <cmath>
-
-#include "rasterizer.h"
 
 // Listing 11-4: put the point in the plane's equation.
 double SignedDistance(const Plane& plane, const Vec3& vertex) {
@@ -151,13 +149,12 @@ std::optional<CameraSpaceInstance> ClipInstance(const CameraSpaceInstance& insta
 }
 
 // Listing 11-1.
-std::vector<CameraSpaceInstance> ClipScene(const std::vector<CameraSpaceInstance>& instances,
-                                           const std::vector<Plane>& planes) {
-  std::vector<CameraSpaceInstance> clipped_instances;
-  for (const CameraSpaceInstance& I : instances) {
+CameraSpaceScene ClipScene(const CameraSpaceScene& scene, const std::vector<Plane>& planes) {
+  CameraSpaceScene clipped_scene;
+  for (const CameraSpaceInstance& I : scene.instances) {
     if (std::optional<CameraSpaceInstance> clipped_instance = ClipInstance(I, planes)) {
-      clipped_instances.push_back(*std::move(clipped_instance));
+      clipped_scene.instances.push_back(*std::move(clipped_instance));
     }
   }
-  return clipped_instances;
+  return clipped_scene;
 }

@@ -1,4 +1,4 @@
-#include "rasterizer.h"
+#include "scenes.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
@@ -31,24 +31,34 @@ const Model& CubeModel() {
   return cube;
 }
 
+// Figure 10-3: two instances of the cube, the camera at the origin.
+Scene SceneTwoCubes() {
+  Scene scene;
+  scene.instances = {
+      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
+  };
+  return scene;
+}
+
 // Figure 10-10: the instances scaled and rotated, seen from a camera moved back
 // and to the left and turned 30 degrees to the right. Also the scene of
 // chapters 11 to 14.
 Scene SceneTransformedCubes() {
   Scene scene;
-  scene.camera = {{-3, 1, 2}, cgfs::MakeOYRotationMatrix(-30)};
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
   scene.instances = {
       {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, cgfs::MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+      {&CubeModel(), {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
   };
   return scene;
 }
 
-// Spec §12.3: the scene of Figure 10-10 and a third cube, behind the camera: its
-// bounding sphere lies wholly behind the near plane, so the whole cube is rejected.
+// The scene of Figure 10-10 and a third cube, behind the camera: its bounding
+// sphere lies wholly behind the near plane, so the whole cube is rejected.
 Scene SceneWithCubeBehindCamera() {
   Scene scene = SceneTransformedCubes();
-  scene.instances.push_back({&CubeModel(), {1, cgfs::MakeOYRotationMatrix(195), {0, 0, -10}}});
+  scene.instances.push_back({&CubeModel(), {1, MakeOYRotationMatrix(195), {0, 0, -10}}});
   return scene;
 }
 
@@ -58,7 +68,7 @@ Scene SceneWithCubeBehindCamera() {
 Scene SceneCubeCutByNearPlane() {
   Scene scene;
   scene.instances = {
-      {&CubeModel(), {0.25, cgfs::MakeOYRotationMatrix(30), {0.05, -0.1, 1.05}}},
+      {&CubeModel(), {0.25, MakeOYRotationMatrix(30), {0.05, -0.1, 1.05}}},
   };
   return scene;
 }

@@ -1,10 +1,10 @@
-// Spec §8.3: the chapter's figures, pixel by pixel and as whole images.
+// The chapter's figures, pixel by pixel and as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "pixels.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;

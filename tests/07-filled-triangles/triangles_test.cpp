@@ -1,4 +1,4 @@
-// Spec §8.4: DrawWireframeTriangle and DrawFilledTriangle, pixel by pixel. Every later
+// DrawWireframeTriangle and DrawFilledTriangle, pixel by pixel. Every later
 // rasterizer chapter keeps them unchanged and runs these tests too.
 #include <catch2/catch.hpp>
 
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "pixels.h"
-#include "rasterizer.h"
+#include "triangles.h"
 
 using cgfs::test::DrawnPixels;
 using cgfs::test::Row;

@@ -1,9 +1,9 @@
-// Spec §9.3: the chapter's figure as a whole image.
+// The chapter's figure as a whole image.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;

@@ -1,5 +1,5 @@
-// Spec §9.4: DrawShadedTriangle. Every later rasterizer chapter keeps it unchanged
-// and runs these tests too.
+// DrawShadedTriangle (Listing 8-1), with values worked out by hand. Every later
+// rasterizer chapter keeps it unchanged and runs these tests too.
 #include <catch2/catch.hpp>
 
 #include <set>
@@ -8,7 +8,7 @@
 
 #include "pixels.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "shaded_triangles.h"
 
 using cgfs::test::DrawnPixels;
 using Pixels = std::set<std::pair<int, int>>;

@@ -1,10 +1,10 @@
-// Spec §10.3: the chapter's figure, pixel by pixel and as a whole image.
+// The chapter's figures, pixel by pixel and as a whole image.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "pixels.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;
@@ -22,7 +22,7 @@ TEST_CASE("pinned pixels of the cube", "[figures]") {
 }
 
 TEST_CASE("the book's cube: only part of its back face and edges reach the canvas", "[figures]") {
-  const Canvas canvas = RenderFigureNamed(Figures(CubeVariant::kBook), "fig-9-4");
+  const Canvas canvas = RenderFigureNamed(Figures(), "book-listing-cube");
   long blue = 0;
   for (const auto& [x, y] : cgfs::test::DrawnPixels(canvas)) {
     blue += canvas.GetPixel(x, y) == Rgb8{0, 0, 255};
@@ -36,4 +36,8 @@ TEST_CASE("the book's cube: only part of its back face and edges reach the canva
 
 TEST_CASE("fig-9-4 matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-9-4");
+}
+
+TEST_CASE("book-listing-cube matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "book-listing-cube");
 }

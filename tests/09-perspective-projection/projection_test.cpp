@@ -1,8 +1,8 @@
-// Spec §10.4: ViewportToCanvas and ProjectVertex. Chapters 10 and 11 keep them and
+// ViewportToCanvas and ProjectVertex. Chapters 10 and 11 keep them and
 // run these tests too.
 #include <catch2/catch.hpp>
 
-#include "rasterizer.h"
+#include "projection.h"
 
 TEST_CASE("ViewportToCanvas scales viewport units to pixels, truncating", "[projection]") {
   const Canvas canvas(600, 600);
@@ -32,4 +32,6 @@ TEST_CASE("ProjectVertex: farther is smaller; the distance d scales the picture"
   CHECK(ProjectVertex({1, 1, 5}, canvas, Viewport{}) == Point{120, 120});
   CHECK(ProjectVertex({1, 1, 10}, canvas, Viewport{}) == Point{60, 60});
   CHECK(ProjectVertex({1, 1, 10}, canvas, Viewport{1, 1, 2}) == Point{120, 120});
+  // On the projection plane itself a point stays where it is: (0.5, 0.5) is the corner.
+  CHECK(ProjectVertex({0.5, 0.5, 1}, canvas, Viewport{}) == Point{300, 300});
 }

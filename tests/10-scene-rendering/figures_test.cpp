@@ -1,9 +1,9 @@
-// Spec §11.3: the chapter's figures, pixel by pixel and as whole images.
+// The chapter's figures, pixel by pixel and as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;
@@ -11,7 +11,7 @@ using cgfs::test::RenderFigureNamed;
 
 TEST_CASE("pinned pixels of the transformed cubes", "[figures]") {
   const Canvas canvas = RenderFigureNamed(Figures(), "fig-10-10");
-  // Vertices are where the spec's matrices put them; some edge ends there.
+  // Vertices are where the matrices of Listing 10-5 put them; some edge ends there.
   CHECK(canvas.GetPixel(-91, -24) != Rgb8{255, 255, 255});
   CHECK(canvas.GetPixel(-218, -258) != Rgb8{255, 255, 255});
   CHECK(canvas.GetPixel(102, 274) != Rgb8{255, 255, 255});

@@ -1,4 +1,4 @@
-// Spec §12.4: the clipping volume, signed distances, bounding spheres, and clipping
+// The clipping volume, signed distances, bounding spheres, and clipping
 // triangles against a plane.
 #include <catch2/catch.hpp>
 
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "checks.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using Catch::Detail::Approx;
 using cgfs::test::CheckNear;
@@ -191,11 +191,12 @@ TEST_CASE("the cube behind the camera is rejected whole", "[clipping]") {
 TEST_CASE("ClipScene keeps the instances that survive", "[clipping]") {
   const Scene scene = SceneWithCubeBehindCamera();
   const glm::dmat4 M_camera = MakeCameraMatrix(scene.camera.position, scene.camera.orientation);
-  std::vector<CameraSpaceInstance> instances;
+  CameraSpaceScene camera_space_scene;
   for (const Instance& I : scene.instances) {
-    instances.push_back(TransformToCameraSpace(I, M_camera * MakeTransformMatrix(I.transform)));
+    camera_space_scene.instances.push_back(
+        TransformToCameraSpace(I, M_camera * MakeTransformMatrix(I.transform)));
   }
-  CHECK(ClipScene(instances, ClippingPlanes(1)).size() == 2);
+  CHECK(ClipScene(camera_space_scene, ClippingPlanes(1)).instances.size() == 2);
 }
 
 TEST_CASE("a cube across the near plane is clipped: every vertex ends up at z >= d", "[clipping]") {
@@ -213,4 +214,47 @@ TEST_CASE("a cube across the near plane is clipped: every vertex ends up at z >=
       CHECK(corner.z >= 1 - 1e-12);
     }
   }
+}
+
+TEST_CASE("a cube around the camera: only its face on the near plane is left", "[clipping]") {
+  // The untransformed cube surrounds the camera (chapter 10 could not draw it). Its
+  // face z = +1 lies on the near plane, at x, y = +-600 pixels; everything else is
+  // behind the plane, or reduced to slivers of no area along that face's edges.
+  Scene scene;
+  scene.instances = {{&CubeModel(), {}}};
+  Canvas canvas(600, 600);
+  RenderScene(scene, canvas);
+  Canvas front_face(600, 600);
+  DrawWireframeTriangle({600, 600}, {-600, 600}, {-600, -600}, cgfs::kRed, front_face);
+  DrawWireframeTriangle({600, 600}, {-600, -600}, {600, -600}, cgfs::kRed, front_face);
+  CHECK(canvas.GetImage() == front_face.GetImage());
+}
+
+TEST_CASE("a cube behind the camera draws nothing, not an upside-down image", "[clipping]") {
+  Scene scene;
+  scene.instances = {{&CubeModel(), {1, glm::dmat4(1.0), {0.5, 0.5, -5}}}};
+  Canvas canvas(600, 600);
+  RenderScene(scene, canvas);
+  CHECK(canvas.GetImage() == Canvas(600, 600).GetImage());
+}
+
+TEST_CASE("geometry reaching from behind the camera is drawn only where it is in front",
+          "[clipping]") {
+  // A long box from z = -4 to z = 6: its far end is visible, its near end is cut at
+  // the near plane, and every vertex that reaches ProjectVertex has z >= d.
+  Scene scene;
+  scene.instances = {{&CubeModel(), {5, glm::dmat4(1.0), {0, 0, 1}}}};
+  const glm::dmat4 M = MakeTransformMatrix(scene.instances[0].transform);
+  CameraSpaceScene camera_space_scene{{TransformToCameraSpace(scene.instances[0], M)}};
+  const CameraSpaceScene clipped = ClipScene(camera_space_scene, ClippingPlanes(1));
+  REQUIRE(clipped.instances.size() == 1);
+  CHECK_FALSE(clipped.instances[0].model.triangles.empty());
+  for (const Triangle& T : clipped.instances[0].model.triangles) {
+    for (const Vec3& corner : Corners(T, clipped.instances[0].model.vertices)) {
+      CHECK(corner.z >= 1 - 1e-12);
+    }
+  }
+  Canvas canvas(600, 600);
+  RenderScene(scene, canvas);
+  CHECK(canvas.GetImage() != Canvas(600, 600).GetImage());
 }

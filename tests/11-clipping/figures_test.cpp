@@ -1,9 +1,9 @@
-// Spec §12.3: the chapter's figures, as whole images.
+// The chapter's figures, as whole images.
 #include <catch2/catch.hpp>
 
 #include "golden.h"
 #include "printing.h"
-#include "rasterizer.h"
+#include "scenes.h"
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;

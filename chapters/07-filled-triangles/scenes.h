@@ -1,0 +1,13 @@
+// The figures of the chapter.
+#pragma once
+
+#include <vector>
+
+#include "cgfs/figure.h"
+#include "triangles.h"
+
+inline constexpr char kChapterDescription[] =
+    "Chapter 7, Filled Triangles: wireframe triangles, and filled ones as horizontal segments.";
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();

@@ -1,0 +1,21 @@
+// The models and scenes of the chapter's figures, and the figures themselves.
+#pragma once
+
+#include <vector>
+
+#include "cgfs/figure.h"
+#include "scene_rendering.h"
+
+inline constexpr char kChapterDescription[] =
+    "Chapter 10, Describing and Rendering a Scene: models, instances, transforms and a camera.";
+
+// The cube of "Representing a Cube": edge 2, centred on the origin, each face two
+// triangles of one colour, wound so that (V1 - V0) x (V2 - V0) points outwards.
+const Model& CubeModel();
+
+// The scenes of Figures 10-3 and 10-10.
+Scene SceneTwoCubes();
+Scene SceneTransformedCubes();
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();

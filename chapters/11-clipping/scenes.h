@@ -1,0 +1,26 @@
+// The models and scenes of the chapter's figures, and the figures themselves.
+#pragma once
+
+#include <vector>
+
+#include "cgfs/figure.h"
+#include "clipping.h"
+
+inline constexpr char kChapterDescription[] =
+    "Chapter 11, Clipping: the clipping volume, bounding spheres, splitting triangles.";
+
+// The cube of "Representing a Cube": edge 2, centred on the origin, each face two
+// triangles of one colour, wound so that (V1 - V0) x (V2 - V0) points outwards.
+const Model& CubeModel();
+
+// The scenes of Figures 10-3 and 10-10.
+Scene SceneTwoCubes();
+Scene SceneTransformedCubes();
+
+// The scene of Figure 10-10 with a third cube, behind the camera.
+Scene SceneWithCubeBehindCamera();
+// A cube so close to the camera that the near plane cuts it.
+Scene SceneCubeCutByNearPlane();
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();
