@@ -1,11 +1,51 @@
 # How a chapter folder becomes targets.
 #
 # A chapter folder holds its headers, its .cpp files and main.cpp. Everything but
-# main.cpp becomes the library NN-name-lib, which the program NN-name and the
-# reference tests NN-name-tests link. With CGFS_STUDENT_DIR set, the same is done
-# with the student's folder of the same name instead of ours, so our tests judge
-# the student's code; a chapter the student has not written yet has no targets
-# and its tests are reported as skipped.
+# main.cpp becomes the object library NN-name-lib, which the program NN-name and
+# the reference tests NN-name-tests link. With CGFS_STUDENT_DIR set, the same is
+# done with the student's folder of the same name instead of ours, so our tests
+# judge the student's code (docs/students.md):
+#   - a chapter the student has not started has no targets; its tests are skipped;
+#   - a header or main.cpp the student's folder lacks is taken from ours;
+#   - a book function the student has not written yet is linked to a stand-in that
+#     throws "not written yet: Name" (cmake/NotWrittenYet.cmake), so the tests of
+#     what is written run, and the others are reported as not written yet.
+
+# Stops with one line when CGFS_STUDENT_DIR names no folder, or a folder without
+# any chapter folder of ours; warns about folders that look like misnamed chapters.
+function(cgfs_check_student_dir chapters)
+  if(NOT CGFS_STUDENT_DIR)
+    return()
+  endif()
+  string(REPLACE ";" ", " expected "${chapters}")
+  if(NOT IS_DIRECTORY "${CGFS_STUDENT_DIR}")
+    message(FATAL_ERROR "CGFS_STUDENT_DIR: there is no folder ${CGFS_STUDENT_DIR}")
+  endif()
+  file(GLOB entries RELATIVE "${CGFS_STUDENT_DIR}" "${CGFS_STUDENT_DIR}/*")
+  set(known "")
+  set(unknown "")
+  foreach(entry IN LISTS entries)
+    if(NOT IS_DIRECTORY "${CGFS_STUDENT_DIR}/${entry}")
+      continue()
+    elseif(entry IN_LIST chapters)
+      list(APPEND known "${entry}")
+    elseif(entry MATCHES "^[0-9][0-9]")
+      list(APPEND unknown "${entry}")
+    endif()
+  endforeach()
+  string(REPLACE ";" ", " unknown "${unknown}")
+  if(NOT known)
+    if(unknown)
+      set(found " (it has ${unknown})")
+    endif()
+    message(FATAL_ERROR "CGFS_STUDENT_DIR: ${CGFS_STUDENT_DIR} holds no chapter folder${found}; "
+      "the folder names are: ${expected}")
+  endif()
+  if(unknown)
+    message(WARNING "CGFS_STUDENT_DIR: ignoring ${unknown}, which is not a chapter folder name; "
+      "the folder names are: ${expected}")
+  endif()
+endfunction()
 
 function(cgfs_chapter_source_dir chapter out_var)
   if(CGFS_STUDENT_DIR)
@@ -20,6 +60,27 @@ function(cgfs_chapter_source_dir chapter out_var)
   endif()
 endfunction()
 
+# In a student build, adds to TARGET the stand-ins for every book function that
+# the object libraries OBJECT_LIBRARIES call and do not define.
+function(cgfs_add_not_written_yet target)
+  if(NOT CGFS_STUDENT_DIR)
+    return()  # ours: a missing function is a link error, never a skipped test
+  endif()
+  set(generated "${CMAKE_BINARY_DIR}/not-written-yet/${target}.cpp")
+  set(objects "")
+  foreach(library IN LISTS ARGN)
+    list(APPEND objects "$<TARGET_OBJECTS:${library}>")
+  endforeach()
+  add_custom_command(OUTPUT "${generated}"
+    COMMAND "${CMAKE_COMMAND}" "-DNM=${CMAKE_NM}" "-DOUTPUT=${generated}"
+      "-DOBJECTS=${objects}" -P "${PROJECT_SOURCE_DIR}/cmake/NotWrittenYet.cmake"
+    DEPENDS ${objects} "${PROJECT_SOURCE_DIR}/cmake/NotWrittenYet.cmake"
+    COMMENT "Finding the book functions ${target} calls that are not written yet"
+    VERBATIM)
+  target_sources(${target} PRIVATE "${generated}")
+  target_link_libraries(${target} PRIVATE cgfs::common)
+endfunction()
+
 function(cgfs_add_chapter chapter)
   cgfs_chapter_source_dir(${chapter} dir)
   if(NOT dir)
@@ -29,33 +90,64 @@ function(cgfs_add_chapter chapter)
 
   file(GLOB sources CONFIGURE_DEPENDS "${dir}/*.cpp")
   list(FILTER sources EXCLUDE REGEX "/main\\.cpp$")
-  add_library(${chapter}-lib STATIC ${sources})
+  if(NOT sources)
+    # A folder with headers only: every function is "not written yet".
+    set(sources "${CMAKE_BINARY_DIR}/not-written-yet/${chapter}-nothing.cpp")
+    file(WRITE "${sources}" "// ${dir} has no .cpp file yet.\n")
+  endif()
+  add_library(${chapter}-lib OBJECT ${sources})
   target_include_directories(${chapter}-lib PUBLIC "${dir}")
+  if(CGFS_STUDENT_DIR)
+    # Headers the student has not copied are copies of ours, in a folder searched
+    # after theirs. Copies, not our folder itself: our scenes.h must find their
+    # raytracer.h, not the one beside it.
+    set(fallback "${CMAKE_BINARY_DIR}/our-headers/${chapter}")
+    file(REMOVE_RECURSE "${fallback}")
+    file(GLOB ours "${PROJECT_SOURCE_DIR}/chapters/${chapter}/*.h")
+    file(GLOB theirs CONFIGURE_DEPENDS "${dir}/*.h")  # a new header of theirs reconfigures
+    foreach(header IN LISTS ours)
+      cmake_path(GET header FILENAME name)
+      if(NOT EXISTS "${dir}/${name}")
+        configure_file("${header}" "${fallback}/${name}" COPYONLY)
+      endif()
+    endforeach()
+    target_include_directories(${chapter}-lib PUBLIC "${fallback}")
+  endif()
   target_link_libraries(${chapter}-lib PUBLIC cgfs::common PRIVATE cgfs_warnings)
 
-  if(EXISTS "${dir}/main.cpp")
-    add_executable(${chapter} "${dir}/main.cpp")
-    target_link_libraries(${chapter} PRIVATE ${chapter}-lib cgfs_warnings)
-    target_compile_definitions(${chapter} PRIVATE CGFS_CHAPTER="${chapter}")
-    set_property(GLOBAL APPEND PROPERTY CGFS_CHAPTER_PROGRAMS ${chapter})
+  set(main "${dir}/main.cpp")
+  if(NOT EXISTS "${main}")
+    set(main "${PROJECT_SOURCE_DIR}/chapters/${chapter}/main.cpp")  # the same in every chapter
   endif()
+  add_library(${chapter}-main OBJECT "${main}")
+  target_link_libraries(${chapter}-main PRIVATE ${chapter}-lib cgfs_warnings)
+  target_compile_definitions(${chapter}-main PRIVATE CGFS_CHAPTER="${chapter}")
+  add_executable(${chapter} $<TARGET_OBJECTS:${chapter}-main>)
+  target_link_libraries(${chapter} PRIVATE ${chapter}-lib)
+  cgfs_add_not_written_yet(${chapter} ${chapter}-lib ${chapter}-main)
+  set_property(GLOBAL APPEND PROPERTY CGFS_CHAPTER_PROGRAMS ${chapter})
 endfunction()
 
-# `render` writes every chapter's figures into out/<chapter>/;
+# `render` writes every chapter's figures into out/<chapter>/ (a student build:
+# into its own build folder, build-student/out/<chapter>/, never over ours);
 # `update-golden` (ours only, never a student's) rewrites tests/golden/<chapter>/.
 function(cgfs_add_render_target)
   get_property(programs GLOBAL PROPERTY CGFS_CHAPTER_PROGRAMS)
+  if(CGFS_STUDENT_DIR)
+    set(out "${CMAKE_BINARY_DIR}/out")
+  else()
+    set(out "${PROJECT_SOURCE_DIR}/out")
+  endif()
   set(render_commands "")
   set(golden_commands "")
   foreach(program IN LISTS programs)
-    list(APPEND render_commands
-      COMMAND ${program} --output "${PROJECT_SOURCE_DIR}/out/${program}")
+    list(APPEND render_commands COMMAND ${program} --output "${out}/${program}")
     list(APPEND golden_commands
       COMMAND ${program} --output "${PROJECT_SOURCE_DIR}/tests/golden/${program}")
   endforeach()
   add_custom_target(render ${render_commands}
     WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
-    COMMENT "Rendering every chapter's figures into out/"
+    COMMENT "Rendering every chapter's figures into ${out}/"
     VERBATIM USES_TERMINAL)
   if(NOT CGFS_STUDENT_DIR)
     add_custom_target(update-golden ${golden_commands}

@@ -23,7 +23,8 @@ TEST_CASE("CanvasToViewport scales pixels to the 1x1 viewport at d = 1", "[equat
   CHECK(CanvasToViewport(0, 0, canvas, viewport) == Vec3(0, 0, 1));
 }
 
-TEST_CASE("the 1x1 viewport at d = 1 gives a 53.13 degree field of view", "[equations]") {
+TEST_CASE("CanvasToViewport: the 1x1 viewport at d = 1 gives a 53.13 degree field of view",
+          "[equations]") {
   const Viewport viewport;
   const double fov = 2 * std::atan(viewport.width / 2 / viewport.distance);
   CHECK(fov * 180 / std::numbers::pi == Approx(53.13).margin(0.005));

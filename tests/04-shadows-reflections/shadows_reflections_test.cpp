@@ -75,7 +75,8 @@ TEST_CASE("ReflectRay mirrors a vector about a unit normal", "[equations]") {
   CHECK(glm::length(mirrored) == 5);
 }
 
-TEST_CASE("a point light's shadow ray stops at the light (t_max = 1)", "[equations]") {
+TEST_CASE("ComputeLighting: a point light's shadow ray stops at the light (t_max = 1)",
+          "[equations]") {
   // The light is at (0, 2, 0), so L = (0, 2, 0) from P = (0, 0, 0): t = 1 at the light.
   Scene scene = SceneLitBy({{LightType::kPoint, 1.0, {0, 2, 0}, {}}});
   scene.spheres = {{{0, 5, 0}, 1, cgfs::kRed}};  // beyond the light: t = 2 .. 3
@@ -84,7 +85,8 @@ TEST_CASE("a point light's shadow ray stops at the light (t_max = 1)", "[equatio
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 0.0);
 }
 
-TEST_CASE("a directional light's shadow ray has no end (t_max = inf)", "[equations]") {
+TEST_CASE("ComputeLighting: a directional light's shadow ray has no end (t_max = inf)",
+          "[equations]") {
   Scene scene = SceneLitBy({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
   scene.spheres = {{{0, 1000, 0}, 1, cgfs::kRed}};
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 0.0);
@@ -92,7 +94,8 @@ TEST_CASE("a directional light's shadow ray has no end (t_max = inf)", "[equatio
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 1.0);
 }
 
-TEST_CASE("shadow rays start at epsilon, so a point does not shadow itself", "[equations]") {
+TEST_CASE("ComputeLighting: shadow rays start at epsilon, so a point does not shadow itself",
+          "[equations]") {
   // P lies on the sphere (up to rounding): its shadow ray finds the sphere at t ~ 0.
   Scene scene = SceneLitBy({{LightType::kDirectional, 1.0, {}, {0, 1, 0}}});
   scene.spheres = {{{0, -1, 0}, 1, cgfs::kRed}};
@@ -101,7 +104,7 @@ TEST_CASE("shadow rays start at epsilon, so a point does not shadow itself", "[e
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 0.0);
 }
 
-TEST_CASE("recursion depth 0 returns the local colour", "[equations]") {
+TEST_CASE("TraceRay: recursion depth 0 returns the local colour", "[equations]") {
   const Scene scene = SceneReflections();
   const Canvas canvas(600, 600);
   const Vec3 D = CanvasToViewport(0, -150, canvas, scene.viewport);
@@ -115,7 +118,7 @@ TEST_CASE("recursion depth 0 returns the local colour", "[equations]") {
   CHECK(TraceRay({0, 0, 0}, D, 1, cgfs::kInf, 3, scene) != local);
 }
 
-TEST_CASE("the reflection blend is local * (1 - r) + reflected * r", "[equations]") {
+TEST_CASE("TraceRay: the reflection blend is local * (1 - r) + reflected * r", "[equations]") {
   // A black half-mirror straight ahead; its reflection looks back past the camera
   // at the white background: 0 * 0.5 + 255 * 0.5.
   Scene scene = SceneLitBy({{LightType::kAmbient, 1.0, {}, {}}});
@@ -127,7 +130,7 @@ TEST_CASE("the reflection blend is local * (1 - r) + reflected * r", "[equations
   CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, 5, scene) == Color(0, 0, 0));
 }
 
-TEST_CASE("two mirrors facing each other stop at the recursion limit", "[equations]") {
+TEST_CASE("TraceRay: two mirrors facing each other stop at the recursion limit", "[equations]") {
   Scene scene = SceneLitBy({{LightType::kAmbient, 1.0, {}, {}}});
   scene.spheres = {{{0, 0, 5}, 1, cgfs::kRed, -1, 1.0}, {{0, 0, -5}, 1, cgfs::kBlue, -1, 1.0}};
   // The bounces alternate between the two; with r = 1 only the last sphere's own

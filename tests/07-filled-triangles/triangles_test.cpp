@@ -26,7 +26,7 @@ Pixels FilledPixels(Point P0, Point P1, Point P2) {
 
 }  // namespace
 
-TEST_CASE("the edge lists of the chapter's triangle", "[triangle]") {
+TEST_CASE("Interpolate: the edge lists of the chapter's triangle", "[triangle]") {
   // After sorting, y0 = -250, y1 = 50, y2 = 250.
   std::vector<double> x01 = Interpolate(-250, -200, 50, 200);
   const std::vector<double> x12 = Interpolate(50, 200, 250, 20);

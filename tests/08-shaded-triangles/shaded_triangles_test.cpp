@@ -31,7 +31,7 @@ constexpr Point kShaded0{-200, -250, 0.3}, kShaded1{200, 50, 0.1}, kShaded2{20, 
 
 }  // namespace
 
-TEST_CASE("the h lists of the chapter's triangle", "[shaded]") {
+TEST_CASE("Interpolate: the h lists of the chapter's triangle", "[shaded]") {
   std::vector<double> h01 = Interpolate(-250, 0.3, 50, 0.1);
   const std::vector<double> h12 = Interpolate(50, 0.1, 250, 1.0);
   const std::vector<double> h02 = Interpolate(-250, 0.3, 250, 1.0);

@@ -49,7 +49,8 @@ TEST_CASE("figure 10-2: the cube moved by T = (-1.5, 0, 7)", "[projection]") {
   CHECK(ProjectVertex(CubeModel().vertices[6] + T, canvas, Viewport{}) == Point{-250, -100});
 }
 
-TEST_CASE("the model matrix scales, then rotates, then translates", "[transform]") {
+TEST_CASE("MakeTransformMatrix: the model matrix scales, then rotates, then translates",
+          "[transform]") {
   // The example of "Model Transform": scale 1.5, 45 degrees about Y, then move by (1, 2, 3).
   const Transform transform{1.5, MakeOYRotationMatrix(45), {1, 2, 3}};
   CheckNear(cgfs::ToCartesian(MakeTransformMatrix(transform) * Point4({1, 0, 0})),
@@ -63,7 +64,8 @@ TEST_CASE("rotating then translating is not translating then rotating", "[transf
   CheckNear(cgfs::ToCartesian(R * T * Point4({0, 0, 1})), {-6, 0, 0});  // Figure 10-5
 }
 
-TEST_CASE("the camera matrix of figure 10-10, by its action on vectors", "[transform]") {
+TEST_CASE("MakeCameraMatrix: the camera matrix of figure 10-10, by its action on vectors",
+          "[transform]") {
   const glm::dmat4 M = MakeCameraMatrix({-3, 1, 2}, MakeOYRotationMatrix(-30));
   // Its rows, worked out by hand: [[0.866025, 0, -0.5, 3.598076], [0, 1, 0, -1],
   //                    [0.5, 0, 0.866025, -0.232051], [0, 0, 0, 1]]; its columns are

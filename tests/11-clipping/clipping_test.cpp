@@ -40,7 +40,8 @@ void CheckSameDirection(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-TEST_CASE("the five planes of the clipping volume have unit normals", "[clipping]") {
+TEST_CASE("ClippingPlanes: the five planes of the clipping volume have unit normals",
+          "[clipping]") {
   const std::vector<Plane> planes = ClippingPlanes(1);
   REQUIRE(planes.size() == 5);
   for (const Plane& plane : planes) {
@@ -151,13 +152,14 @@ TEST_CASE("ClipTrianglesAgainstPlane joins the lists instead of nesting them", "
   CHECK(vertices.size() == 6 + 4);
 }
 
-TEST_CASE("the bounding sphere of the cube: centre 0, radius sqrt 3", "[clipping]") {
+TEST_CASE("ComputeBoundingSphere: the bounding sphere of the cube: centre 0, radius sqrt 3",
+          "[clipping]") {
   const BoundingSphere sphere = ComputeBoundingSphere(CubeModel().vertices);
   CheckNear(sphere.center, {0, 0, 0});
   CHECK(sphere.radius == Approx(std::sqrt(3.0)));
 }
 
-TEST_CASE("instance A of figure 10-10 is accepted whole", "[clipping]") {
+TEST_CASE("ClipInstance: instance A of figure 10-10 is accepted whole", "[clipping]") {
   const Scene scene = SceneTransformedCubes();
   const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
                        MakeTransformMatrix(scene.instances[0].transform);
@@ -177,7 +179,7 @@ TEST_CASE("instance A of figure 10-10 is accepted whole", "[clipping]") {
   CHECK(clipped->model.triangles.size() == 12);
 }
 
-TEST_CASE("the cube behind the camera is rejected whole", "[clipping]") {
+TEST_CASE("ClipInstance: the cube behind the camera is rejected whole", "[clipping]") {
   const Scene scene = SceneWithCubeBehindCamera();
   const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
                        MakeTransformMatrix(scene.instances[2].transform);
@@ -199,7 +201,8 @@ TEST_CASE("ClipScene keeps the instances that survive", "[clipping]") {
   CHECK(ClipScene(camera_space_scene, ClippingPlanes(1)).instances.size() == 2);
 }
 
-TEST_CASE("a cube across the near plane is clipped: every vertex ends up at z >= d", "[clipping]") {
+TEST_CASE("ClipInstance: a cube across the near plane is clipped: every vertex ends up at z >= d",
+          "[clipping]") {
   const Scene scene = SceneCubeCutByNearPlane();
   const CameraSpaceInstance cube =
       TransformToCameraSpace(scene.instances[0], MakeTransformMatrix(scene.instances[0].transform));

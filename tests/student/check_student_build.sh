@@ -1,59 +1,84 @@
 #!/usr/bin/env bash
-# Proves the student build (docs/students.md): the reference tests, built with
-# CGFS_STUDENT_DIR against a student's copy of chapter 02, pass for a faithful
-# copy and fail for a copy with one deliberate mistake; chapters the student
-# has not written are reported as skipped.
-# Usage: check_student_build.sh SOURCE_DIR WORK_DIR CMAKE CTEST
+# Proves the student path of docs/students.md, with exactly its layout and commands:
+# a student folder holding raytracer.h, raytracer.cpp and scenes.cpp for chapter 02
+# (no main.cpp, no scenes.h), judged by `scripts/test-student ~/my-cgfs`, run in a
+# copy of the repository with HOME pointing at a scratch folder.
+#   - a faithful copy passes, and render writes into build-student/out/;
+#   - a half-written copy (only CanvasToViewport and IntersectRaySphere) passes what
+#     is written and reports the rest as not written yet, by name;
+#   - a copy with one mistake fails, naming the test;
+#   - a copy that does not compile fails, and ctest afterwards does not pass;
+#   - a missing or misnamed folder gets one line and exit status 2.
+# Usage: check_student_build.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
-source_dir=$1 work=$2 cmake=$3 ctest=$4
+source_dir=$1 work=$2
 chapter=02-basic-rays
 
-rm -rf "$work/good" "$work/bad"
-mkdir -p "$work/good" "$work/bad"
-cp -r "$source_dir/chapters/$chapter" "$work/good/"
-cp -r "$source_dir/chapters/$chapter" "$work/bad/"
+rm -rf "$work"
+mkdir -p "$work/repo" "$work/home/my-cgfs/$chapter"
+tar -C "$source_dir" --exclude='./build*' --exclude=./out --exclude=./.git -cf - . \
+  | tar -C "$work/repo" -xf -
+export HOME=$work/home
+student=$HOME/my-cgfs/$chapter
+ours=$source_dir/chapters/$chapter
+cd "$work/repo"
 
-# The mistake: b = <CO,D> instead of 2<CO,D> in IntersectRaySphere.
-mistake='s/const double b = 2 \* glm::dot(CO, D);/const double b = glm::dot(CO, D);/'
-sed -i "$mistake" "$work/bad/$chapter/raytracer.cpp"
-if cmp -s "$work/good/$chapter/raytracer.cpp" "$work/bad/$chapter/raytracer.cpp"; then
-  echo "FAIL: could not plant the mistake; raytracer.cpp no longer has the expected line" >&2
-  exit 1
-fi
-
-# One build folder for both: common and Catch2's main are compiled only once.
-build=$work/build
-run_student_tests() {  # student_dir -> ctest output in $work/ctest.log, status returned
-  "$cmake" -S "$source_dir" -B "$build" -DCGFS_STUDENT_DIR="$1" >"$work/configure.log" 2>&1 \
-    || { cat "$work/configure.log"; exit 1; }
-  "$cmake" --build "$build" -j2 >"$work/build.log" 2>&1 \
-    || { tail -30 "$work/build.log"; exit 1; }
-  "$ctest" --test-dir "$build" --output-on-failure >"$work/ctest.log" 2>&1
+failed=0
+check() {  # description, then a command that must succeed
+  local what=$1
+  shift
+  if "$@"; then echo "ok: $what"; else echo "FAIL: $what" >&2; failed=1; fi
 }
+run() {  # runs the documented command, output in $work/out.txt, status in $status
+  status=0
+  scripts/test-student "$@" >"$work/out.txt" 2>&1 || status=$?
+  sed 's/^/    /' "$work/out.txt"
+}
+says() { grep -qE "$1" "$work/out.txt"; }
 
-echo "== an unmodified copy of $chapter"
-if ! run_student_tests "$work/good"; then
-  cat "$work/ctest.log"
-  echo "FAIL: the reference tests failed on an unmodified copy" >&2
-  exit 1
-fi
-grep -E 'tests passed' "$work/ctest.log"
-# Every other chapter is missing from the student folder: each of them must show up
-# as one skipped "not written yet" test, and nothing else may run for them.
-others=$(grep -E '^ *[0-9]+/[0-9]+ Test +#' "$work/ctest.log" | grep -v " $chapter:" || true)
-skipped=$(grep -c 'not written yet .*Skipped' <<<"$others" || true)
-echo "chapters reported as not written yet (skipped): $skipped"
-if [ "$skipped" -lt 1 ] || grep -v 'not written yet .*Skipped' <<<"$others" | grep -q .; then
-  cat "$work/ctest.log"
-  echo "FAIL: the chapters missing from the student folder were not all reported as skipped" >&2
-  exit 1
-fi
+echo "== the documented layout: raytracer.h, raytracer.cpp, scenes.cpp"
+cp "$ours/raytracer.h" "$ours/raytracer.cpp" "$ours/scenes.cpp" "$student/"
+run ~/my-cgfs
+check "a faithful copy passes" test $status -eq 0
+check "every test of chapter 02 ran and passed" says "^$chapter: [0-9]+ passed, 0 failed, 0 not written yet"
+cmake --build build-student --target render >"$work/render.log" 2>&1
+check "render writes into build-student/out/" test -f "build-student/out/$chapter/fig-2-11.png"
+check "render leaves out/ alone" test ! -e out
 
-echo "== a copy with b = <CO,D> instead of 2<CO,D>"
-if run_student_tests "$work/bad"; then
-  cat "$work/ctest.log"
-  echo "FAIL: the reference tests passed although the copy has a mistake" >&2
-  exit 1
-fi
-grep -E 'tests passed|Failed' "$work/ctest.log" | head -20
-echo "PASS: the student build passes a faithful copy and catches the mistake"
+echo "== half written: only CanvasToViewport and IntersectRaySphere"
+awk '/^\/\/ Listing 2-4/ { exit } { print }' "$ours/raytracer.cpp" >"$student/raytracer.cpp"
+rm "$student/scenes.cpp"
+run ~/my-cgfs
+check "a half-written chapter passes what is written" test $status -eq 0
+check "CanvasToViewport passes" says "^  CanvasToViewport +passed"
+check "IntersectRaySphere passes" says "^  IntersectRaySphere +passed"
+check "TraceRay is not written yet" says "^  TraceRay +not written yet"
+check "Figures is not written yet" says "^  Figures +not written yet"
+
+echo "== a mistake: b = <CO,D> instead of 2<CO,D>"
+cp "$ours/raytracer.cpp" "$ours/scenes.cpp" "$student/"
+sed -i 's/const double b = 2 \* glm::dot(CO, D);/const double b = glm::dot(CO, D);/' \
+  "$student/raytracer.cpp"
+check "the mistake is planted" grep -q "const double b = glm::dot(CO, D);" "$student/raytracer.cpp"
+run ~/my-cgfs 02
+check "the mistake fails" test $status -eq 1
+check "the failing function is named" says "^  IntersectRaySphere +FAILED"
+
+echo "== a compile error"
+echo 'int broken = ;' >>"$student/raytracer.cpp"
+run ~/my-cgfs
+check "a compile error fails" test $status -eq 1
+check "it says nothing was tested" says "the build failed, so nothing was tested"
+check "ctest after the failed build does not pass" \
+  bash -c '! ctest --test-dir build-student >/dev/null 2>&1'
+
+echo "== folders that are not a student's chapters"
+mkdir -p ~/misnamed/02-basic-ray
+for folder in ~/nothing-here ~/misnamed; do
+  run "$folder"
+  check "$folder: exit status 2" test $status -eq 2
+  check "$folder: one line" test "$(wc -l <"$work/out.txt")" -eq 1
+done
+check "the expected names are given" says "the folder names are: 02-basic-rays, 03-light"
+
+[ $failed -eq 0 ] && echo "PASS: the documented student path works" || exit 1
