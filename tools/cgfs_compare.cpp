@@ -34,9 +34,20 @@ std::string KnownFigures(const fs::path& golden, const fs::path& chapter) {
   return names;
 }
 
-// A file that exists, or CHAPTER/FIGURE among the golden images.
+// Whether anything is at `path` (a broken link, a loop or an unreadable file
+// counts: reading it then says what is wrong with it).
+bool SomethingAt(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(path, error);
+  if (error) {
+    return error != std::errc::no_such_file_or_directory && error != std::errc::not_a_directory;
+  }
+  return status.type() != fs::file_type::not_found;
+}
+
+// A file, or CHAPTER/FIGURE among the golden images.
 fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
-  if (fs::exists(argument)) {
+  if (SomethingAt(argument)) {
     return argument;
   }
   const fs::path name(argument);
@@ -44,12 +55,17 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   if (name.has_extension() || chapter.empty() || chapter.has_parent_path()) {
     throw cgfs::Error("cannot read '" + argument + "': no such file");
   }
-  if (!fs::is_directory(golden / chapter)) {
+  std::error_code error;
+  if (!fs::is_directory(golden, error)) {
+    throw cgfs::Error("--golden '" + golden.string() + "' is not a folder we can read" +
+                      (error ? ": " + error.message() : ""));
+  }
+  if (!fs::is_directory(golden / chapter, error)) {
     throw cgfs::Error("unknown chapter '" + chapter.string() + "' (no folder " +
                       (golden / chapter).string() + ")");
   }
   const fs::path file = golden / chapter / (name.filename().string() + ".png");
-  if (!fs::exists(file)) {
+  if (!SomethingAt(file)) {
     throw cgfs::Error("unknown figure '" + argument + "'; known: " + KnownFigures(golden, chapter));
   }
   return file;

@@ -7,7 +7,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -21,6 +20,12 @@ namespace cgfs {
 namespace fs = std::filesystem;
 
 namespace {
+
+// What ReadImage accepts, checked before anything of that size is allocated: the
+// chapters draw at most 4096x4096, and a plain-text P3 of that size is ~200 MB.
+constexpr long kMaxSide = 1 << 14;
+constexpr long long kMaxPixels = 4096LL * 4096;
+constexpr std::uintmax_t kMaxFileBytes = 256u << 20;
 
 std::string Quoted(const fs::path& path) {
   std::string quoted(1, '\'');  // not "'" + string: that trips GCC 12's -Wrestrict (bug 105329)
@@ -60,16 +65,52 @@ std::string EncodePpm(const Image& image) {
   return encoded;
 }
 
+// A regular file (after symbolic links) of at most kMaxFileBytes: never a FIFO that
+// blocks, a device without end such as /dev/zero, a folder or a symbolic-link loop.
 std::string ReadWholeFile(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error) {
+    throw Error("cannot read " + Quoted(path) + ": " + error.message());
+  }
+  if (status.type() == fs::file_type::directory) {
+    throw Error("cannot read " + Quoted(path) + ": it is a directory");
+  }
+  if (status.type() != fs::file_type::regular) {
+    throw Error("cannot read " + Quoted(path) + ": not a regular file");
+  }
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error) {
+    throw Error("cannot read " + Quoted(path) + ": " + error.message());
+  }
+  if (size > kMaxFileBytes) {
+    throw Error(Quoted(path) + " is too large: " + std::to_string(size) + " bytes, at most " +
+                std::to_string(kMaxFileBytes) + " are read");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
   }
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Read no more than was announced, even if the file grows meanwhile.
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
   if (in.bad()) {
     throw Error("cannot read " + Quoted(path));
   }
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
   return bytes;
+}
+
+// Throws unless a declared image size is one ReadImage accepts.
+void CheckDeclaredSize(long long width, long long height, const fs::path& path,
+                       const std::string& kind) {
+  if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
+      width * height > kMaxPixels) {
+    throw Error(Quoted(path) + " is not a valid " + kind + " image: image size " +
+                std::to_string(width) + "x" + std::to_string(height) +
+                " is out of range (at most " + std::to_string(kMaxSide) + " a side and " +
+                std::to_string(kMaxPixels) + " pixels)");
+  }
 }
 
 // PPM, binary ("P6") or plain ("P3"): a header of whitespace-separated decimal
@@ -85,10 +126,7 @@ class PpmReader {
     const long width = Number("width");
     const long height = Number("height");
     const long maxval = Number("maximum value");
-    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide) {
-      Fail("image size " + std::to_string(width) + "x" + std::to_string(height) +
-           " is out of range");
-    }
+    CheckDeclaredSize(width, height, path_, "PPM");
     if (maxval <= 0 || maxval > 65535) {
       Fail("maximum value " + std::to_string(maxval) + " is out of range 1..65535");
     }
@@ -105,6 +143,10 @@ class PpmReader {
         Fail("the file ends after " + std::to_string(bytes_.size() - pos_) + " of " +
              std::to_string(needed) + " pixel bytes");
       }
+    } else if (bytes_.size() - pos_ < static_cast<std::size_t>(width * height * 3 * 2 - 1)) {
+      // Every sample is a digit and a separator: too few bytes, whatever they hold.
+      Fail("the file is too short for " + std::to_string(width) + "x" + std::to_string(height) +
+           " pixels");
     }
 
     Image image(static_cast<int>(width), static_cast<int>(height));
@@ -126,8 +168,6 @@ class PpmReader {
   }
 
  private:
-  static constexpr long kMaxSide = 1 << 15;
-
   [[noreturn]] void Fail(const std::string& why) const {
     throw Error(Quoted(path_) + " is not a valid PPM image: " + why);
   }
@@ -185,6 +225,13 @@ Image DecodePng(const std::string& bytes, const fs::path& path) {
   int width = 0;
   int height = 0;
   int channels_in_file = 0;
+  // The header first: a small file can declare a huge image ("decompression bomb").
+  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                            static_cast<int>(bytes.size()), &width, &height,
+                            &channels_in_file) == 0) {
+    throw Error(Quoted(path) + " is not a readable PNG image (" + stbi_failure_reason() + ")");
+  }
+  CheckDeclaredSize(width, height, path, "PNG");
   std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                             static_cast<int>(bytes.size()), &width, &height, &channels_in_file, 3),
@@ -230,10 +277,6 @@ void WriteImage(const Image& image, const fs::path& path) {
 }
 
 Image ReadImage(const fs::path& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) {
-    throw Error("cannot read " + Quoted(path) + ": it is a directory");
-  }
   const std::string bytes = ReadWholeFile(path);
   if (bytes.empty()) {
     throw Error(Quoted(path) + " is empty");

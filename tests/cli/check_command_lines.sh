@@ -64,5 +64,53 @@ echo "not an image" >"$work/text.png"
 expect 2 "compare: not an image" "$compare" 02-basic-rays/fig-2-11 "$work/text.png"
 expect 2 "compare: one argument" "$compare" 02-basic-rays/fig-2-11
 
+# Hostile inputs: each one line and exit 2, within 20 s and 2 GB of address space,
+# and nothing of the user's overwritten.
+hostile() {
+  local what=$1
+  shift
+  expect 2 "hostile: $what" timeout 20 prlimit --as=2000000000 -- "$compare" "$@"
+}
+good=$figures/fig-2-11.png
+ln -sfn "$work/loop-b" "$work/loop-a"
+ln -sfn "$work/loop-a" "$work/loop-b"
+hostile "a symbolic-link loop as EXPECTED" "$work/loop-a" "$good"
+hostile "a symbolic-link loop as ACTUAL" 02-basic-rays/fig-2-11 "$work/loop-a"
+hostile "a symbolic-link loop as --golden" --golden "$work/loop-a" 02-basic-rays/fig-2-11 "$good"
+mkdir -p "$work/locked" && cp "$good" "$work/locked/image.png" && chmod 000 "$work/locked"
+as_user=()  # root reads every folder: drop to nobody for these two
+if [ "$(id -u)" -eq 0 ]; then
+  as_user=(setpriv --reuid=nobody --regid=nogroup --clear-groups)
+fi
+expect 2 "hostile: a file in an unreadable folder as EXPECTED" timeout 20 "${as_user[@]}" \
+  "$compare" "$work/locked/image.png" "$good"
+expect 2 "hostile: an unreadable folder as --golden" timeout 20 "${as_user[@]}" "$compare" \
+  --golden "$work/locked" 02-basic-rays/fig-2-11 "$good"
+expect 2 "hostile: a file in an unreadable folder as ACTUAL" timeout 20 "${as_user[@]}" "$compare" \
+  02-basic-rays/fig-2-11 "$work/locked/image.png"
+chmod 700 "$work/locked"
+printf 'P3 32768 32768 255\n' >"$work/huge.ppm"
+hostile "a P3 header declaring 32768x32768" 02-basic-rays/fig-2-11 "$work/huge.ppm"
+printf 'P6 4096 4096 255\n' >"$work/short.ppm"
+hostile "a P6 header declaring 4096x4096 with no pixels" 02-basic-rays/fig-2-11 "$work/short.ppm"
+printf 'P3 4096 4096 255\n1 2 3\n' >"$work/short-p3.ppm"
+hostile "a P3 header declaring 4096x4096 with one pixel" 02-basic-rays/fig-2-11 "$work/short-p3.ppm"
+hostile "/dev/zero" 02-basic-rays/fig-2-11 /dev/zero
+mkfifo "$work/fifo"
+hostile "a FIFO" 02-basic-rays/fig-2-11 "$work/fifo"
+hostile "a folder" 02-basic-rays/fig-2-11 "$work"
+# A PNG that declares 10000x10000 pixels: a decompression bomb, refused from its header.
+printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x27\x10\x00\x00\x27\x10\x08\x02\x00\x00\x00\x00\x00\x00\x00' \
+  >"$work/bomb.png"
+hostile "a PNG declaring 10000x10000 pixels" 02-basic-rays/fig-2-11 "$work/bomb.png"
+cp "$good" "$work/keep.png"
+hostile "--diff onto the image being compared" 02-basic-rays/fig-2-11 "$work/keep.png" --diff "$work/keep.png"
+cmp -s "$good" "$work/keep.png" || { echo "FAIL: the user's image was changed"; failures=$((failures + 1)); }
+
+# Write errors on standard output are errors, in every program.
+expect 2 "chapter program: --list into a full disk" bash -c '"$1" --list >/dev/full' _ "$program"
+expect 2 "compare: output into a full disk" bash -c '"$1" 02-basic-rays/fig-2-11 "$2" >/dev/full' \
+  _ "$compare" "$good"
+
 echo "$failures failed"
 [ "$failures" -eq 0 ]
