@@ -113,9 +113,18 @@ TEST_CASE("bad image files are refused with one-line errors", "[image-io]") {
   WriteText(folder / "short.ppm", "P6\n4 4\n255\nabc");
   CHECK_THAT(message_for(folder / "short.ppm"), Catch::Contains("ends after 3 of 48 pixel bytes"));
 
-  WriteText(folder / "short-ascii.ppm", "P3\n2 1\n255\n1 2 3 4\n");
+  // Long enough in bytes to hold 2x1 pixels, but only four samples.
+  WriteText(folder / "short-ascii.ppm", "P3\n2 1\n255\n1 2 3 4          \n");
   CHECK_THAT(message_for(folder / "short-ascii.ppm"),
              Catch::Contains("the file ends before the pixel value"));
+
+  // Too few bytes for the declared size: refused before any pixel is allocated.
+  WriteText(folder / "tiny-ascii.ppm", "P3\n4096 4096\n255\n1 2 3\n");
+  CHECK_THAT(message_for(folder / "tiny-ascii.ppm"),
+             Catch::Contains("too short for 4096x4096 pixels"));
+
+  WriteText(folder / "huge.ppm", "P3 32768 32768 255\n");
+  CHECK_THAT(message_for(folder / "huge.ppm"), Catch::Contains("32768x32768 is out of range"));
 
   WriteText(folder / "big-sample.ppm", "P3\n1 1\n255\n1 256 3\n");
   CHECK_THAT(message_for(folder / "big-sample.ppm"), Catch::Contains("exceeds the maximum"));
