@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
               << "actual:   " << actual_file.string() << "\n"
               << cgfs::Describe(comparison, actual.Width(), actual.Height())
               << "difference image: " << difference_path
-              << " (red: beyond tolerance, orange: within it)\n";
+              << " (" << cgfs::kDifferenceLegend << ")\n";
     return comparison.passed ? 0 : 1;
   });
 }

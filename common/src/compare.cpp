@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "cgfs/error.h"
 
@@ -12,7 +15,90 @@ namespace cgfs {
 namespace {
 
 constexpr Rgb8 kChangedColor{255, 170, 0};
-constexpr Rgb8 kDifferingColor{255, 0, 0};
+constexpr Rgb8 kMissingColor{230, 0, 0};
+constexpr Rgb8 kExtraColor{0, 80, 255};
+constexpr Rgb8 kRecolouredColor{170, 0, 200};
+
+int LargestChannelDifference(Rgb8 a, Rgb8 b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+// The most common colour of an image: the background of every figure.
+Rgb8 Background(const Image& image) {
+  std::map<std::tuple<int, int, int>, long long> counts;
+  for (int row = 0; row < image.Height(); ++row) {
+    for (int column = 0; column < image.Width(); ++column) {
+      const Rgb8 pixel = image.At(column, row);
+      ++counts[{pixel.r, pixel.g, pixel.b}];
+    }
+  }
+  const auto most =
+      std::max_element(counts.begin(), counts.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto [r, g, b] = most->first;
+  return {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b)};
+}
+
+// How many pixels differ beyond the tolerance when actual(column, row) is compared
+// with expected(source(column, row)), over the pixels whose source is inside.
+template <typename Source>
+long long DifferingUnder(const Image& expected, const Image& actual, int channel_levels,
+                         Source source) {
+  long long differing = 0;
+  for (int row = 0; row < actual.Height(); ++row) {
+    for (int column = 0; column < actual.Width(); ++column) {
+      const auto [from_column, from_row] = source(column, row);
+      if (from_column < 0 || from_row < 0 || from_column >= expected.Width() ||
+          from_row >= expected.Height()) {
+        continue;
+      }
+      if (LargestChannelDifference(expected.At(from_column, from_row), actual.At(column, row)) >
+          channel_levels) {
+        ++differing;
+      }
+    }
+  }
+  return differing;
+}
+
+// The first of the usual slips under which the images match: a pixel off in x or
+// y (the canvas-to-screen mapping), or a flip (y growing down instead of up).
+std::string Diagnose(const Image& expected, const Image& actual, const Tolerance& tolerance,
+                     long long allowed) {
+  struct Slip {
+    int dx, dy;
+    const char* words;
+  };
+  static constexpr Slip kShifts[] = {
+      {0, 1, "your image is ours moved one row down: check the Sy mapping, Sy = Ch/2 - y - 1"},
+      {0, -1, "your image is ours moved one row up: check the Sy mapping, Sy = Ch/2 - y - 1"},
+      {1, 0, "your image is ours moved one column right: check the Sx mapping, Sx = Cw/2 + x"},
+      {-1, 0, "your image is ours moved one column left: check the Sx mapping, Sx = Cw/2 + x"},
+  };
+  for (const Slip& slip : kShifts) {
+    const long long differing =
+        DifferingUnder(expected, actual, tolerance.channel_levels, [&](int column, int row) {
+          return std::pair{column - slip.dx, row - slip.dy};
+        });
+    if (differing <= allowed) {
+      return slip.words;
+    }
+  }
+  const int w = expected.Width();
+  const int h = expected.Height();
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, [&](int column, int row) {
+        return std::pair{column, h - 1 - row};
+      }) <= allowed) {
+    return "your image is ours upside down: canvas y grows upwards, rows downwards "
+           "(Sy = Ch/2 - y - 1)";
+  }
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, [&](int column, int row) {
+        return std::pair{w - 1 - column, row};
+      }) <= allowed) {
+    return "your image is ours mirrored left to right: check the Sx mapping, Sx = Cw/2 + x";
+  }
+  return "";
+}
 
 Rgb8 Faded(Rgb8 pixel) {
   const int luma = (299 * pixel.r + 587 * pixel.g + 114 * pixel.b) / 1000;
@@ -50,6 +136,7 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
   result.last_column = -1;
   result.last_row = -1;
 
+  const Rgb8 background = Background(expected);
   long long channel_difference_sum = 0;
   for (int row = 0; row < expected.Height(); ++row) {
     for (int column = 0; column < expected.Width(); ++column) {
@@ -68,7 +155,16 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
       }
       if (largest > tolerance.channel_levels) {
         ++result.differing_pixels;
-        shown = kDifferingColor;
+        if (want == background) {
+          ++result.extra_pixels;
+          shown = kExtraColor;
+        } else if (got == background) {
+          ++result.missing_pixels;
+          shown = kMissingColor;
+        } else {
+          ++result.recoloured_pixels;
+          shown = kRecolouredColor;
+        }
         result.first_column = std::min(result.first_column, column);
         result.first_row = std::min(result.first_row, row);
         result.last_column = std::max(result.last_column, column);
@@ -80,6 +176,9 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
   result.mean_channel_difference =
       static_cast<double>(channel_difference_sum) / static_cast<double>(result.pixels * 3);
   result.passed = result.differing_pixels <= result.allowed_differing_pixels;
+  if (!result.passed) {
+    result.diagnosis = Diagnose(expected, actual, tolerance, result.allowed_differing_pixels);
+  }
   return result;
 }
 
@@ -94,6 +193,12 @@ std::string Describe(const Comparison& c, int width, int height) {
   if (c.differing_pixels > 0) {
     out << "  differing pixels lie between " << Position(c.first_column, c.first_row, width, height)
         << " and " << Position(c.last_column, c.last_row, width, height) << "\n";
+    out << "  of them in ours only (missing): " << c.missing_pixels
+        << ", in yours only (extra): " << c.extra_pixels
+        << ", in both in another colour: " << c.recoloured_pixels << "\n";
+  }
+  if (!c.diagnosis.empty()) {
+    out << "  diagnosis: " << c.diagnosis << "\n";
   }
   return out.str();
 }

@@ -67,8 +67,11 @@ TEST_CASE("a changed 10x10 block fails and is counted exactly", "[compare]") {
   CHECK(result.last_column == 59);
   CHECK(result.first_row == 200);
   CHECK(result.last_row == 209);
-  CHECK(result.difference.At(55, 205) == Rgb8{255, 0, 0});
-  CHECK(result.difference.At(0, 0) != Rgb8{255, 0, 0});
+  // Both images have something drawn there (no background): "in both, another colour".
+  CHECK(result.recoloured_pixels == 100);
+  const Rgb8 marked = result.difference.At(55, 205);
+  CHECK_FALSE((marked.r == marked.g && marked.g == marked.b));  // not the faded grey
+  CHECK(result.difference.At(0, 0) != marked);
   CHECK_THAT(cgfs::Describe(result, 600, 600),
              Catch::Contains("FAIL: 100 of 360000") && Catch::Contains("canvas (-250, 99)"));
 }
@@ -89,4 +92,52 @@ TEST_CASE("the tolerance is a budget of pixels beyond a few levels", "[compare]"
 
 TEST_CASE("images of different sizes cannot be compared", "[compare]") {
   CHECK_THROWS_AS(cgfs::CompareImages(Image(600, 600), Image(600, 598)), cgfs::Error);
+}
+
+namespace {
+
+// A white 100x100 image with a black 30x20 rectangle whose top-left pixel is (x, y).
+Image Rectangle(int x, int y) {
+  Image image(100, 100, Rgb8{255, 255, 255});
+  for (int row = y; row < y + 20; ++row) {
+    for (int column = x; column < x + 30; ++column) {
+      image.Set(column, row, Rgb8{0, 0, 0});
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("differing pixels are told apart: in ours only, in yours only, recoloured", "[compare]") {
+  Image actual = Rectangle(10, 10);
+  actual.Set(90, 90, Rgb8{0, 0, 0});        // extra
+  actual.Set(10, 10, Rgb8{255, 255, 255});  // missing
+  actual.Set(11, 10, Rgb8{0, 200, 0});      // recoloured
+  const auto result = cgfs::CompareImages(Rectangle(10, 10), actual);
+  CHECK(result.extra_pixels == 1);
+  CHECK(result.missing_pixels == 1);
+  CHECK(result.recoloured_pixels == 1);
+  CHECK(result.difference.At(90, 90) != result.difference.At(10, 10));
+  CHECK(result.difference.At(11, 10) != result.difference.At(10, 10));
+}
+
+TEST_CASE("a picture moved by one pixel or flipped is diagnosed in words", "[compare]") {
+  const Image ours = Rectangle(10, 10);
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 11)).diagnosis,
+             Catch::Contains("moved one row down") && Catch::Contains("Sy"));
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 9)).diagnosis,
+             Catch::Contains("moved one row up"));
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(11, 10)).diagnosis,
+             Catch::Contains("moved one column right") && Catch::Contains("Sx"));
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(9, 10)).diagnosis,
+             Catch::Contains("moved one column left"));
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 70)).diagnosis,
+             Catch::Contains("upside down"));
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(60, 10)).diagnosis,
+             Catch::Contains("mirrored left to right"));
+  // Moved by more than a pixel: no diagnosis, only the numbers.
+  CHECK(cgfs::CompareImages(ours, Rectangle(10, 30)).diagnosis.empty());
+  // A match needs none.
+  CHECK(cgfs::CompareImages(ours, ours).diagnosis.empty());
 }

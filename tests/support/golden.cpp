@@ -47,7 +47,7 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
     FAIL(Describe(comparison, actual.Width(), actual.Height())
          << "  actual image:     " << actual_file.string() << "\n"
          << "  difference image: " << difference_file.string()
-         << " (red: beyond tolerance, orange: within it)");
+         << " (" << kDifferenceLegend << ")");
   }
   SUCCEED(Describe(comparison, actual.Width(), actual.Height()));
 }
