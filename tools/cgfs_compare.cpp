@@ -1,4 +1,6 @@
 // cgfs-compare EXPECTED ACTUAL: is a student's image the chapter's figure?
+// cgfs-compare --report FOLDER: the same for a whole folder laid out like out/,
+// as one HTML page (tools/report.h).
 //
 // EXPECTED is an image file, or a figure named CHAPTER/FIGURE (for example
 // 02-basic-rays/fig-2-11), which means tests/golden/CHAPTER/FIGURE.png.
@@ -18,6 +20,7 @@
 #include "cgfs/compare.h"
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
+#include "report.h"
 
 namespace fs = std::filesystem;
 
@@ -71,6 +74,46 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   return file;
 }
 
+// --report: one page for a whole folder; exit 0 when every figure there passes.
+int Report(const fs::path& folder, fs::path html, const fs::path& golden) {
+  if (html.empty()) {
+    html = folder / "report.html";
+  }
+  const std::vector<cgfs::ReportEntry> entries = cgfs::CompareFolder(folder, golden, true);
+  if (entries.empty()) {
+    throw cgfs::Error("'" + folder.string() +
+                      "' has no chapter folder (such as 02-basic-rays/) of ours");
+  }
+  cgfs::WriteReport(entries, html, "Your figures against ours: " + folder.string());
+  int failed = 0;
+  for (const cgfs::ReportEntry& entry : entries) {
+    std::cout << entry.chapter << "/" << entry.figure << ": ";
+    switch (entry.verdict) {
+      case cgfs::ReportEntry::Verdict::kPassed:
+        std::cout << "PASS";
+        break;
+      case cgfs::ReportEntry::Verdict::kFailed:
+        std::cout << "FAIL";
+        break;
+      case cgfs::ReportEntry::Verdict::kMissing:
+        std::cout << "missing";
+        break;
+      case cgfs::ReportEntry::Verdict::kUnreadable:
+        std::cout << "unreadable";
+        break;
+    }
+    if (entry.verdict != cgfs::ReportEntry::Verdict::kPassed) {
+      ++failed;
+    }
+    if (!entry.diagnosis.empty()) {
+      std::cout << " (" << entry.diagnosis << ")";
+    }
+    std::cout << "\n";
+  }
+  std::cout << "report: " << html.string() << "\n";
+  return failed == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,15 +122,28 @@ int main(int argc, char** argv) {
     std::string actual_argument;
     std::string difference_path;
     std::string golden = CGFS_GOLDEN_DIR;
+    std::string report_folder;
+    std::string html_path;
     CLI::App app(
         "Compares ACTUAL (PNG or PPM) with EXPECTED (an image, or a figure CHAPTER/FIGURE such as\n"
         "02-basic-rays/fig-2-11) under the reference tests' tolerance: a pixel differs when a\n"
         "channel is off by more than 2 levels, and at most 0.01% of the pixels may differ.\n"
+        "With --report FOLDER, compares every CHAPTER/FIGURE.png or .ppm in FOLDER instead\n"
+        "and writes one HTML page of them all.\n"
         "Exit status: 0 match, 1 no match, 2 bad input.",
         "cgfs-compare");
-    app.add_option("EXPECTED", expected_argument, "the reference: CHAPTER/FIGURE or an image file")
-        ->required();
-    app.add_option("ACTUAL", actual_argument, "your image, PNG or PPM")->required();
+    auto* expected_option = app.add_option("EXPECTED", expected_argument,
+                                           "the reference: CHAPTER/FIGURE or an image file");
+    auto* actual_option = app.add_option("ACTUAL", actual_argument, "your image, PNG or PPM");
+    auto* report_option =
+        app.add_option("--report", report_folder,
+                       "compare a folder laid out like out/ (CHAPTER/FIGURE.png) and write a page")
+            ->type_name("FOLDER");
+    report_option->excludes(expected_option)->excludes(actual_option);
+    app.add_option("--html", html_path,
+                   "where --report writes its page (default FOLDER/report.html)")
+        ->type_name("FILE")
+        ->needs(report_option);
     app.add_option("--diff", difference_path,
                    "where to write the difference image (default ACTUAL.diff.png)")
         ->type_name("FILE");
@@ -95,6 +151,12 @@ int main(int argc, char** argv) {
         ->type_name("DIR");
     if (!cgfs::ParseArguments(app, argc, argv)) {
       return 0;
+    }
+    if (!report_folder.empty()) {
+      return Report(report_folder, html_path, golden);
+    }
+    if (expected_argument.empty() || actual_argument.empty()) {
+      throw cgfs::UsageError("give EXPECTED and ACTUAL, or --report FOLDER");
     }
 
     const fs::path expected_file = ResolveExpected(expected_argument, golden);
@@ -116,8 +178,8 @@ int main(int argc, char** argv) {
     std::cout << "expected: " << expected_file.string() << "\n"
               << "actual:   " << actual_file.string() << "\n"
               << cgfs::Describe(comparison, actual.Width(), actual.Height())
-              << "difference image: " << difference_path
-              << " (" << cgfs::kDifferenceLegend << ")\n";
+              << "difference image: " << difference_path << " (" << cgfs::kDifferenceLegend
+              << ")\n";
     return comparison.passed ? 0 : 1;
   });
 }

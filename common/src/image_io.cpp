@@ -246,9 +246,12 @@ Image DecodePng(const std::string& bytes, const fs::path& path) {
 
 }  // namespace
 
+std::string EncodeImage(const Image& image, const fs::path& name) {
+  return ToLower(name.extension().string()) == ".ppm" ? EncodePpm(image) : EncodePng(image);
+}
+
 void WriteImage(const Image& image, const fs::path& path) {
-  const bool ppm = ToLower(path.extension().string()) == ".ppm";
-  const std::string encoded = ppm ? EncodePpm(image) : EncodePng(image);
+  const std::string encoded = EncodeImage(image, path);
 
   // Write beside the destination, then rename: a failure never leaves a
   // half-written file where the user's old one was.

@@ -3,14 +3,27 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <system_error>
 
 #include "cgfs/compare.h"
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
+#include "report.h"
 
 namespace cgfs::test {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// <build>/test-output/report.html: every figure whose golden test failed last time it
+// ran, side by side with ours (tools/report.h).
+void UpdateReport(const fs::path& output) {
+  const std::vector<ReportEntry> entries = CompareFolder(output, CGFS_GOLDEN_DIR, false);
+  WriteReport(entries, output / "report.html", "Golden tests that failed");
+}
+
+}  // namespace
 
 const Figure& FindFigure(const std::vector<Figure>& figures, const std::string& name) {
   for (const Figure& figure : figures) {
@@ -37,17 +50,26 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
         "look at it, and commit it");
   }
   const Comparison comparison = CompareImages(ReadImage(golden), actual);
+  const fs::path output = CGFS_TEST_OUTPUT_DIR;
+  const fs::path folder = output / chapter;
+  const fs::path actual_file = folder / (name + ".png");
+  const fs::path difference_file = folder / (name + ".diff.png");
   if (!comparison.passed) {
-    const fs::path folder = fs::path(CGFS_TEST_OUTPUT_DIR) / chapter;
     fs::create_directories(folder);
-    const fs::path actual_file = folder / (name + ".actual.png");
-    const fs::path difference_file = folder / (name + ".diff.png");
     WriteImage(actual, actual_file);
     WriteImage(comparison.difference, difference_file);
+    UpdateReport(output);
     FAIL(Describe(comparison, actual.Width(), actual.Height())
          << "  actual image:     " << actual_file.string() << "\n"
-         << "  difference image: " << difference_file.string()
-         << " (" << kDifferenceLegend << ")");
+         << "  difference image: " << difference_file.string() << " (" << kDifferenceLegend << ")\n"
+         << "  every failed figure side by side: " << (output / "report.html").string());
+  }
+  // A pass clears what an earlier failure of this figure left behind.
+  std::error_code error;
+  const bool stale = fs::remove(actual_file, error);
+  fs::remove(difference_file, error);
+  if (stale) {
+    UpdateReport(output);
   }
   SUCCEED(Describe(comparison, actual.Width(), actual.Height()));
 }

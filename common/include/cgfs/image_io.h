@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "cgfs/image.h"
 
@@ -11,6 +12,9 @@ namespace cgfs {
 // written next to its destination and renamed into place, so an existing file
 // is replaced only by a complete new one. Throws cgfs::Error.
 void WriteImage(const Image& image, const std::filesystem::path& path);
+
+// The bytes of a PNG, or of a binary PPM (P6) when `name` ends in .ppm.
+std::string EncodeImage(const Image& image, const std::filesystem::path& name);
 
 // Reads PNG, binary PPM (P6) or plain PPM (P3), whatever the file name says.
 // PNG alpha is dropped and grey becomes RGB; PPM samples are scaled from their

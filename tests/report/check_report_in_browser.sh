@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The HTML report of `cgfs-compare --report`, loaded in a real browser (headless
+# Chromium): a student folder with one right figure, one wrong, one moved one row
+# down and one missing. Checks the verdicts printed, and in the browser that every
+# image shows and that the counts at the top match the rows. Leaves a screenshot
+# in WORK_DIR/report.png. Without Chromium the browser part is skipped.
+# Usage: check_report_in_browser.sh CHAPTER_02_PROGRAM CGFS_COMPARE WORK_DIR
+set -euo pipefail
+program=$1 compare=$2 work=$3
+rm -rf "$work"
+mkdir -p "$work/mine/02-basic-rays" "$work/mine/03-light" "$work/ours"
+"$program" --output "$work/ours" --format ppm >/dev/null
+cp "$work/ours/fig-2-11.ppm" "$work/mine/02-basic-rays/"                        # right
+{ printf 'P6\n600 600\n255\n'; head -c 1800 /dev/zero | tr '\0' '\377'
+  tail -c +16 "$work/ours/fig-2-11-with-ground.ppm" | head -c $((599 * 1800)); } \
+  >"$work/mine/02-basic-rays/fig-2-11-with-ground.ppm"                           # one row down
+cp "$work/ours/fig-2-11.ppm" "$work/mine/03-light/fig-3-7-diffuse.ppm"            # wrong
+                                                                                 # fig-3-16: missing
+status=0
+"$compare" --report "$work/mine" >"$work/out.txt" || status=$?
+cat "$work/out.txt"
+failed=0
+want() { grep -qF "$1" "$work/out.txt" || { echo "FAIL: no line '$1'"; failed=1; }; }
+[ $status -eq 1 ] || { echo "FAIL: exit status $status, expected 1"; failed=1; }
+want "02-basic-rays/fig-2-11: PASS"
+want "02-basic-rays/fig-2-11-with-ground: FAIL (your image is ours moved one row down"
+want "03-light/fig-3-7-diffuse: FAIL"
+want "03-light/fig-3-16-specular: missing"
+
+browser=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$browser" ]; then
+  echo "SKIPPED: no chromium to load the page in (CI installs it: scripts/setup)"
+  exit $failed
+fi
+page="file://$work/mine/report.html"
+flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars)
+dom=$(timeout 120 "$browser" "${flags[@]}" --dump-dom "$page" 2>/dev/null)
+check=$(grep -o '<p id="check">[^<]*' <<<"$dom" | sed 's/.*>//')
+echo "the browser counted: $check"
+expected="images shown: 10 of 10; rows passed: 1, failed: 2, missing: 1"
+[ "$check" = "$expected" ] || { echo "FAIL: expected '$expected'"; failed=1; }
+summary=$(grep -o '<p id="summary">.*</p>' <<<"$dom" | sed 's/<[^>]*>//g')
+echo "the page says: $summary"
+[ "$summary" = "1 passed, 2 failed, 1 missing" ] || { echo "FAIL: wrong summary"; failed=1; }
+timeout 120 "$browser" "${flags[@]}" --window-size=1400,2200 --screenshot="$work/report.png" \
+  "$page" >/dev/null 2>&1 || true
+echo "screenshot: $work/report.png"
+[ $failed -eq 0 ] && echo "PASS: the report shows every figure as it should"
+exit $failed

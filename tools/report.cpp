@@ -1,0 +1,215 @@
+#include "report.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "cgfs/error.h"
+#include "cgfs/image_io.h"
+
+namespace cgfs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> SortedEntries(const fs::path& folder) {
+  std::vector<fs::path> entries;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    entries.push_back(entry.path());
+  }
+  std::sort(entries.begin(), entries.end());
+  return entries;
+}
+
+std::string Base64(const std::string& bytes) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    std::uint32_t chunk = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size())
+      chunk |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size())
+      chunk |= static_cast<unsigned char>(bytes[i + 2]);
+    out += kDigits[(chunk >> 18) & 63];
+    out += kDigits[(chunk >> 12) & 63];
+    out += i + 1 < bytes.size() ? kDigits[(chunk >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kDigits[chunk & 63] : '=';
+  }
+  return out;
+}
+
+std::string Escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string ImageCell(const Image& image, const std::string& caption) {
+  if (image.Width() == 0) {
+    return "<td class=\"none\">" + Escaped(caption) + ": none</td>";
+  }
+  return "<td><img alt=\"" + Escaped(caption) + "\" src=\"data:image/png;base64," +
+         Base64(EncodeImage(image, "image.png")) + "\"><br>" + Escaped(caption) + "</td>";
+}
+
+const char* VerdictName(ReportEntry::Verdict verdict) {
+  switch (verdict) {
+    case ReportEntry::Verdict::kPassed:
+      return "passed";
+    case ReportEntry::Verdict::kFailed:
+      return "failed";
+    case ReportEntry::Verdict::kMissing:
+      return "missing";
+    case ReportEntry::Verdict::kUnreadable:
+      return "unreadable";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<ReportEntry> CompareFolder(const fs::path& folder, const fs::path& golden,
+                                       bool list_missing) {
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) {
+    throw Error("cannot read the folder '" + folder.string() + "'" +
+                (error ? ": " + error.message() : ": not a folder"));
+  }
+  std::vector<ReportEntry> entries;
+  for (const fs::path& chapter : SortedEntries(golden)) {
+    const fs::path theirs = folder / chapter.filename();
+    if (!fs::is_directory(theirs, error)) {
+      continue;
+    }
+    for (const fs::path& reference : SortedEntries(chapter)) {
+      if (reference.extension() != ".png") {
+        continue;
+      }
+      ReportEntry entry;
+      entry.chapter = chapter.filename().string();
+      entry.figure = reference.stem().string();
+      for (const char* extension : {".png", ".ppm"}) {
+        const fs::path candidate = theirs / (entry.figure + extension);
+        if (fs::symlink_status(candidate, error).type() != fs::file_type::not_found && !error) {
+          entry.actual_file = candidate;
+          break;
+        }
+      }
+      if (entry.actual_file.empty() && !list_missing) {
+        continue;
+      }
+      entry.expected = ReadImage(reference);
+      if (entry.actual_file.empty()) {
+        entry.message = "no " + entry.figure + ".png or .ppm in " + theirs.string();
+      } else {
+        try {
+          entry.actual = ReadImage(entry.actual_file);
+          const Comparison comparison = CompareImages(entry.expected, entry.actual);
+          entry.verdict =
+              comparison.passed ? ReportEntry::Verdict::kPassed : ReportEntry::Verdict::kFailed;
+          entry.message = Describe(comparison, entry.actual.Width(), entry.actual.Height());
+          entry.diagnosis = comparison.diagnosis;
+          entry.difference = comparison.difference;
+        } catch (const Error& bad) {
+          entry.verdict = ReportEntry::Verdict::kUnreadable;
+          entry.message = bad.what();
+        }
+      }
+      entries.push_back(std::move(entry));
+    }
+  }
+  return entries;
+}
+
+void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
+                 const std::string& title) {
+  int counts[4] = {0, 0, 0, 0};
+  for (const ReportEntry& entry : entries) {
+    ++counts[static_cast<int>(entry.verdict)];
+  }
+  const fs::path html_folder = fs::absolute(html).parent_path();
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
+       << Escaped(title) << "</title>\n<style>\n"
+       << "body{font-family:sans-serif;margin:1em}td{vertical-align:top;padding:4px;"
+          "text-align:center}img{width:300px;image-rendering:pixelated;border:1px solid #ccc}"
+          "tr.passed h3{color:#070}tr.failed h3,tr.unreadable h3{color:#b00}"
+          "tr.missing h3{color:#a60}pre{text-align:left;white-space:pre-wrap;max-width:28em}"
+          ".diagnosis{font-weight:bold}\n"
+       << "</style></head><body>\n<h1>" << Escaped(title) << "</h1>\n"
+       << "<p id=\"summary\"><span id=\"passed\">" << counts[0] << "</span> passed, "
+       << "<span id=\"failed\">" << counts[1] + counts[3] << "</span> failed, "
+       << "<span id=\"missing\">" << counts[2] << "</span> missing</p>\n"
+       << "<p>Difference images: " << Escaped(kDifferenceLegend) << ".</p>\n<table>\n";
+  for (const ReportEntry& entry : entries) {
+    const fs::path readme = fs::path(CGFS_SOURCE_DIR) / "chapters" / entry.chapter / "README.md";
+    page << "<tr class=\"" << VerdictName(entry.verdict) << "\"><td><h3>" << Escaped(entry.chapter)
+         << "/" << Escaped(entry.figure) << ": " << VerdictName(entry.verdict) << "</h3>";
+    if (!entry.diagnosis.empty()) {
+      page << "<p class=\"diagnosis\">" << Escaped(entry.diagnosis) << "</p>";
+    }
+    page << "<pre>" << Escaped(entry.message) << "</pre><a href=\""
+         << Escaped(fs::relative(readme, html_folder).generic_string())
+         << "\">the chapter's README</a></td>" << ImageCell(entry.expected, "ours")
+         << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference")
+         << "</tr>\n";
+  }
+  // A line the page fills in itself once loaded: how many of its images a browser
+  // could show, and the verdicts counted from the rows (tests/report checks both).
+  page << "</table>\n<p id=\"check\">(the browser has not counted the images yet)</p>\n"
+       << "<script>\nwindow.addEventListener('load', () => {\n"
+       << "  const images = [...document.images];\n"
+       << "  const shown = images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
+       << "  const rows = verdict => document.querySelectorAll('tr.' + verdict).length;\n"
+       << "  document.getElementById('check').textContent = `images shown: ${shown} of "
+          "${images.length}; rows passed: ${rows('passed')}, failed: "
+          "${rows('failed') + rows('unreadable')}, missing: ${rows('missing')}`;\n"
+       << "});\n</script>\n</body></html>\n";
+
+  // Several test processes may write the page at once: each writes its own
+  // temporary file and renames it into place.
+  fs::path temporary = html;
+  temporary += "." + std::to_string(::getpid()) + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << page.str();
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw Error("cannot write '" + html.string() + "'");
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, html, error);
+  if (error) {
+    fs::remove(temporary, error);
+    throw Error("cannot write '" + html.string() + "': " + error.message());
+  }
+}
+
+}  // namespace cgfs

@@ -1,0 +1,37 @@
+// The visual report: one self-contained HTML page with, per figure, our image,
+// yours and their difference, the numbers, the verdict and the diagnosis.
+// Written by `cgfs-compare --report FOLDER` and by the golden tests on failure.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cgfs/compare.h"
+#include "cgfs/image.h"
+
+namespace cgfs {
+
+struct ReportEntry {
+  enum class Verdict { kPassed, kFailed, kMissing, kUnreadable };
+  std::string chapter;
+  std::string figure;
+  Verdict verdict = Verdict::kMissing;
+  std::filesystem::path actual_file;  // empty when missing
+  std::string message;                // the numbers, or why the file could not be used
+  std::string diagnosis;
+  Image expected, actual, difference;  // actual and difference empty unless compared
+};
+
+// Compares every image of FOLDER laid out like out/ (<chapter>/<figure>.png or
+// .ppm) with the golden image of that name. With list_missing, every figure of a
+// chapter folder present in FOLDER that has no image is listed as missing.
+std::vector<ReportEntry> CompareFolder(const std::filesystem::path& folder,
+                                       const std::filesystem::path& golden, bool list_missing);
+
+// Writes the page (images embedded as data: URLs), replacing `html` only by a
+// complete new file. Throws cgfs::Error.
+void WriteReport(const std::vector<ReportEntry>& entries, const std::filesystem::path& html,
+                 const std::string& title);
+
+}  // namespace cgfs
