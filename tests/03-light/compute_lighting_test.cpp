@@ -50,12 +50,18 @@ TEST_CASE("ComputeLighting: light from behind the surface adds no diffuse light"
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, -1, scene) == 0);
 }
 
+TEST_CASE("ComputeLighting: light from just below the surface adds no diffuse light",
+          "[equations]") {
+  // L = (1, -0.1, 0): n_dot_l < 0. Matte (s = -1), so only the diffuse guard matters.
+  const Scene scene = SceneWithLights({{LightType::kPoint, 0.6, {1, -0.1, 0}, {}}});
+  CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {-1, -0.1, 0}, -1, scene) == 0);
+}
+
 TEST_CASE("ComputeLighting: the specular term is not guarded by n_dot_l > 0 (book behaviour)",
           "[equations]") {
-  // L = (1, -0.1, 0) comes from just below the surface, so no diffuse light; its
-  // mirror image R = (-1, -0.1, 0) points straight at V, so cos = 1 and the
-  // specular term adds the whole intensity.
+  // The same light, shiny (s = 10): its mirror image R = (-1, -0.1, 0) points straight
+  // at V, so cos = 1 and the specular term adds the whole intensity, although the
+  // light is below the surface. (The previous test pins the diffuse part at 0.)
   const Scene scene = SceneWithLights({{LightType::kPoint, 0.6, {1, -0.1, 0}, {}}});
   CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {-1, -0.1, 0}, 10, scene) == Approx(0.6));
-  CHECK(ComputeLighting({0, 0, 0}, {0, 1, 0}, {-1, -0.1, 0}, -1, scene) == 0);
 }
