@@ -54,10 +54,11 @@ std::vector<cgfs::Figure> Figures() {
        "the same with DrawLineIncremental: y += a per pixel, the same gaps",
        [](Canvas& canvas) { DrawStar(DrawLineIncremental, canvas); }},
       {"all-directions-left-to-right",
-       "the same with DrawLineLeftToRight: every direction, but steep lines break up",
+       "the same with DrawLineLeftToRight: both orders, but steep lines break up and vertical ones "
+       "vanish",
        [](Canvas& canvas) { DrawStar(DrawLineLeftToRight, canvas); }},
       {"all-directions-x-of-y",
-       "the same with DrawLineXOfY: steep lines whole, shallow ones broken",
+       "the same with DrawLineXOfY: steep lines whole, shallow ones broken, horizontal ones gone",
        [](Canvas& canvas) { DrawStar(DrawLineXOfY, canvas); }},
       {"all-directions-both-cases",
        "the same with DrawLineBothCases (Listing 6-1): every line whole",

@@ -142,8 +142,7 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
     for (int column = 0; column < expected.Width(); ++column) {
       const Rgb8 want = expected.At(column, row);
       const Rgb8 got = actual.At(column, row);
-      const int largest =
-          std::max({std::abs(want.r - got.r), std::abs(want.g - got.g), std::abs(want.b - got.b)});
+      const int largest = LargestChannelDifference(want, got);
       channel_difference_sum +=
           std::abs(want.r - got.r) + std::abs(want.g - got.g) + std::abs(want.b - got.b);
       result.max_channel_difference = std::max(result.max_channel_difference, largest);
