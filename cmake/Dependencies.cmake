@@ -13,6 +13,9 @@ cgfs_require_package(glm_FOUND libglm-dev "GLM")
 find_package(CLI11 QUIET CONFIG)
 cgfs_require_package(CLI11_FOUND libcli11-dev "CLI11")
 
+# Chapter 5 draws with several threads ("Parallelism").
+find_package(Threads REQUIRED)
+
 find_package(PkgConfig QUIET)
 cgfs_require_package(PKG_CONFIG_FOUND pkgconf "pkg-config")
 pkg_check_modules(STB QUIET IMPORTED_TARGET stb)

@@ -7,11 +7,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <system_error>
+
+#include <unistd.h>
 
 #include "cgfs/arguments.h"
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
+#include "cgfs/progress.h"
 
 namespace cgfs {
 
@@ -144,7 +148,10 @@ int ChapterProgram::DrawFigures(const std::vector<Figure>& figures) const {
   CreateOutputFolder(output_);
   for (const Figure* figure : selected) {
     const auto start = std::chrono::steady_clock::now();
+    std::optional<ProgressDisplay> progress;
+    progress.emplace(figure->name, isatty(STDERR_FILENO) == 1);
     const Canvas canvas = RenderFigure(*figure, size.width, size.height);
+    progress.reset();
     const std::chrono::duration<double, std::milli> elapsed =
         std::chrono::steady_clock::now() - start;
     const fs::path file = fs::path(output_) / (figure->name + "." + format_);

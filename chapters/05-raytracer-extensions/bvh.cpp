@@ -1,0 +1,179 @@
+#include "bvh.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace {
+
+constexpr int kLeafSize = 2;
+
+Vec3 Centre(const Box& box) {
+  return (box.min + box.max) * 0.5;
+}
+
+int LongestAxis(const Vec3& size) {
+  if (size.x >= size.y && size.x >= size.z) {
+    return 0;
+  }
+  return size.y >= size.z ? 1 : 2;
+}
+
+}  // namespace
+
+bool RayHitsBox(const Box& box, const Vec3& O, const Vec3& D, const Vec3& inv_D, double t_min,
+                double t_max, double& t_enter) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (D[axis] == 0) {  // parallel to the slab: inside it or never
+      if (O[axis] < box.min[axis] || O[axis] > box.max[axis]) {
+        return false;
+      }
+      continue;
+    }
+    double t0 = (box.min[axis] - O[axis]) * inv_D[axis];
+    double t1 = (box.max[axis] - O[axis]) * inv_D[axis];
+    if (t0 > t1) {
+      std::swap(t0, t1);
+    }
+    t_min = std::max(t_min, t0);
+    t_max = std::min(t_max, t1);
+    if (t_min > t_max) {
+      return false;
+    }
+  }
+  t_enter = t_min;
+  return true;
+}
+
+Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
+  const int count = static_cast<int>(objects.size());
+  std::vector<Box> boxes;
+  boxes.reserve(objects.size());
+  for (const auto& object : objects) {
+    objects_.push_back(object.get());
+    boxes.push_back(object->Bounds());
+  }
+  order_.resize(objects.size());
+  for (int i = 0; i < count; ++i) {
+    order_[i] = i;
+  }
+  nodes_.reserve(objects.size());
+  if (count > 0) {
+    Build(0, count, boxes, 1);
+  }
+}
+
+// Appends the node of order_[first, first + count) and its subtree: a leaf when
+// few objects are left, else two halves split at the median centre along the axis
+// where the centres spread most.
+void Bvh::Build(int first, int count, const std::vector<Box>& boxes, int depth) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  depth_ = std::max(depth_, depth);
+  Box box;
+  Box centres;
+  for (int i = first; i < first + count; ++i) {
+    box = Union(box, boxes[order_[i]]);
+    const Vec3 centre = Centre(boxes[order_[i]]);
+    centres = Union(centres, {centre, centre});
+  }
+  nodes_[index].box = box;
+  if (count <= kLeafSize) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return;
+  }
+  const int axis = LongestAxis(centres.max - centres.min);
+  const int half = count / 2;
+  std::nth_element(order_.begin() + first, order_.begin() + first + half,
+                   order_.begin() + first + count, [&](int a, int b) {
+                     const double ca = Centre(boxes[a])[axis];
+                     const double cb = Centre(boxes[b])[axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  Build(first, half, boxes, depth + 1);
+  nodes_[index].second_child = static_cast<int>(nodes_.size());
+  Build(first + half, count - half, boxes, depth + 1);
+}
+
+// Visits the nodes whose box the ray enters no later than the best hit so far, the
+// nearer child first, so that the farther one is often skipped. Halving splits keep
+// the tree's depth, and so the stack, under 64 for any scene that fits in memory.
+Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
+  Hit best;
+  object = -1;
+  const Vec3 inv_D = 1.0 / ray.D;
+  struct Entry {
+    int node;
+    double t_enter;
+  };
+  Entry stack[64];
+  int size = 0;
+  double t_root = 0;
+  if (!order_.empty() && RayHitsBox(nodes_[0].box, ray.O, ray.D, inv_D, t_min, t_max, t_root)) {
+    stack[size++] = {0, t_root};
+  }
+  while (size > 0) {
+    const Entry entry = stack[--size];
+    if (entry.t_enter > best.t) {
+      continue;  // a nearer hit was found since this node was pushed
+    }
+    const Node& node = nodes_[entry.node];
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        const int candidate = order_[i];
+        const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
+        // On a tie the lower index wins, as in the plain loop, which keeps the first.
+        if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
+          best = hit;
+          object = candidate;
+        }
+      }
+      continue;
+    }
+    const int children[2] = {entry.node + 1, node.second_child};
+    double enter[2] = {cgfs::kInf, cgfs::kInf};
+    bool hits[2] = {false, false};
+    for (int c = 0; c < 2; ++c) {
+      hits[c] = RayHitsBox(nodes_[children[c]].box, ray.O, ray.D, inv_D, t_min,
+                           std::min(t_max, best.t), enter[c]);
+    }
+    const int near = (hits[1] && (!hits[0] || enter[1] < enter[0])) ? 1 : 0;
+    for (const int c : {1 - near, near}) {
+      if (hits[c]) {
+        stack[size++] = {children[c], enter[c]};
+      }
+    }
+  }
+  return best;
+}
+
+bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
+  object = -1;
+  if (order_.empty()) {
+    return false;
+  }
+  const Vec3 inv_D = 1.0 / ray.D;
+  int stack[64];
+  int size = 0;
+  stack[size++] = 0;
+  while (size > 0) {
+    const int index = stack[--size];
+    const Node& node = nodes_[index];
+    double t_enter = 0;
+    if (!RayHitsBox(node.box, ray.O, ray.D, inv_D, t_min, t_max, t_enter)) {
+      continue;
+    }
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        if (objects_[order_[i]]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
+          object = order_[i];
+          return true;
+        }
+      }
+      continue;
+    }
+    stack[size++] = node.second_child;
+    stack[size++] = index + 1;
+  }
+  return false;
+}
