@@ -65,7 +65,19 @@ std::vector<Span> CombineSpans(CsgOperation operation, const std::vector<Span>& 
     }
     inside = now_inside;
   }
-  return result;
+  // Where operands touch, the walk can end a span and start the next at the same t
+  // (the union of [4, 6] and [6, 8]), or make a span of no length (their
+  // intersection). Neither has a surface a ray could meet: join the first, drop the second.
+  std::vector<Span> joined;
+  for (const Span& span : result) {
+    if (!joined.empty() && joined.back().out.t == span.in.t) {
+      joined.back().out = span.out;
+    } else {
+      joined.push_back(span);
+    }
+  }
+  std::erase_if(joined, [](const Span& span) { return span.in.t == span.out.t; });
+  return joined;
 }
 
 void CsgSolid::Spans(const Ray& ray, std::vector<Span>& spans) const {

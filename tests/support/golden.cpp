@@ -39,10 +39,14 @@ Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& 
   return RenderFigure(FindFigure(figures, name), kGoldenWidth, kGoldenHeight);
 }
 
+std::string GoldenFile(const std::string& chapter, const std::string& name) {
+  return (fs::path(CGFS_GOLDEN_DIR) / chapter / (name + ".png")).string();
+}
+
 void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& figures,
                         const std::string& name) {
   const Image actual = RenderFigureNamed(figures, name).GetImage();
-  const fs::path golden = fs::path(CGFS_GOLDEN_DIR) / chapter / (name + ".png");
+  const fs::path golden = GoldenFile(chapter, name);
   INFO("golden image: " << golden.string());
   if (!fs::exists(golden)) {
     FAIL(

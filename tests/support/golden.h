@@ -19,6 +19,9 @@ const Figure& FindFigure(const std::vector<Figure>& figures, const std::string& 
 // Draws the named figure at 600x600.
 Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& name);
 
+// tests/golden/<chapter>/<name>.png
+std::string GoldenFile(const std::string& chapter, const std::string& name);
+
 // Draws the named figure at 600x600 and compares it with
 // tests/golden/<chapter>/<name>.png under the project's tolerance. On failure the
 // actual and a difference image are written to <build>/test-output/<chapter>/

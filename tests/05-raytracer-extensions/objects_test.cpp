@@ -1,0 +1,102 @@
+// "Supporting Other Primitives" and "Caching Invariants": triangles, the cached
+// sphere intersection, and the boxes of the hierarchy.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "bvh.h"
+#include "meshes.h"
+#include "printing.h"
+#include "raytracer.h"
+
+namespace {
+
+const Triangle kTriangle{{0, 0, 5}, {1, 0, 5}, {0, 1, 5}, cgfs::kRed};
+
+}  // namespace
+
+TEST_CASE("IntersectRayTriangle: the plane's t when the point is inside", "[equations]") {
+  // N = (B - A) x (C - A) = (0, 0, 1); the plane is z = 5.
+  CHECK(kTriangle.N == Vec3(0, 0, 1));
+  CHECK(IntersectRayTriangle({0, 0, 0}, {0.05, 0.05, 1}, kTriangle) == 5);
+  CHECK(IntersectRayTriangle({0, 0, 0}, {0.025, 0.025, 0.5}, kTriangle) == 10);
+}
+
+TEST_CASE("IntersectRayTriangle: outside the triangle, on its plane, is a miss", "[equations]") {
+  // (0.75, 0.75, 5) is past the edge BC (x + y = 1).
+  CHECK(IntersectRayTriangle({0, 0, 0}, {0.15, 0.15, 1}, kTriangle) == cgfs::kInf);
+  CHECK(IntersectRayTriangle({0, 0, 0}, {-0.01, 0.5, 5}, kTriangle) == cgfs::kInf);
+}
+
+TEST_CASE("IntersectRayTriangle: a ray parallel to the plane is rejected", "[equations]") {
+  CHECK(IntersectRayTriangle({0, 0, 5}, {1, 0, 0}, kTriangle) == cgfs::kInf);
+  CHECK(IntersectRayTriangle({0, 0, 0}, {1, 1, 0}, kTriangle) == cgfs::kInf);
+}
+
+TEST_CASE("IntersectRayTriangle: a point on an edge is inside", "[equations]") {
+  CHECK(IntersectRayTriangle({0, 0, 0}, {0.1, 0, 1}, kTriangle) == 5);  // on AB at (0.5, 0, 5)
+}
+
+TEST_CASE("IntersectRayTriangle: behind the origin, t is negative and Intersect rejects it",
+          "[equations]") {
+  CHECK(IntersectRayTriangle({0.2, 0.2, 10}, {0, 0, 1}, kTriangle) == -5);
+  CHECK(kTriangle.Intersect(Ray{{0.2, 0.2, 10}, {0, 0, 1}}, 1, cgfs::kInf).primitive == nullptr);
+}
+
+TEST_CASE("IntersectRaySphere with cached invariants finds the very same roots", "[equations]") {
+  // Same arithmetic on the same values: equal to the last bit, for rays from the
+  // camera (cached <CO,CO>) and from elsewhere.
+  Random random(7);
+  const Vec3 camera{0.5, 1, -2};
+  for (int i = 0; i < 2000; ++i) {
+    Sphere sphere({random.Between(-3, 3), random.Between(-3, 3), random.Between(2, 9)},
+                  random.Between(0.1, 2), cgfs::kRed);
+    sphere.Prepare(camera);
+    const bool from_camera = i % 2 == 0;
+    const Vec3 O = from_camera ? camera : Vec3{random.Between(-1, 1), 0, random.Between(-1, 1)};
+    const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(0.2, 2)};
+    Ray ray{O, D, true, from_camera, glm::dot(D, D)};
+    const auto book = IntersectRaySphere(O, D, sphere);
+    const auto cached = IntersectRaySphere(ray, sphere);
+    REQUIRE(book.first == cached.first);
+    REQUIRE(book.second == cached.second);
+  }
+}
+
+TEST_CASE("RayHitsBox: the slab test and its entry t", "[equations]") {
+  const Box box{{-1, -1, 4}, {1, 1, 6}};
+  const Vec3 O{0, 0, 0};
+  double t = -1;
+  const Vec3 D{0, 0, 1};
+  CHECK(RayHitsBox(box, O, D, 1.0 / D, 0, cgfs::kInf, t));
+  CHECK(t == 4);
+  // Parallel to two pairs of slabs, the ray is inside them or never.
+  const Vec3 beside{2, 0, 1};
+  CHECK_FALSE(RayHitsBox(box, {2, 0, 0}, D, 1.0 / D, 0, cgfs::kInf, t));
+  CHECK(RayHitsBox(box, O, beside, 1.0 / beside, 0, cgfs::kInf, t) == false);
+  // The range of t counts: the box lies at t in [4, 6].
+  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 0, 3.9, t));
+  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 6.1, cgfs::kInf, t));
+  CHECK(RayHitsBox(box, O, D, 1.0 / D, 5, cgfs::kInf, t));
+  CHECK(t == 5);
+}
+
+TEST_CASE("Bvh: a tree of halving splits over a sphere field", "[equations]") {
+  Scene scene = SceneSphereField(1000);
+  const Bvh bvh(scene.objects);
+  // 1001 objects in leaves of at most 2: depth ceil(log2(1001 / 2)) + 1 = 10.
+  CHECK(bvh.Depth() == 10);
+  CHECK(bvh.NodeCount() < 2 * 1001);
+}
+
+TEST_CASE("SphereField places the same spheres on every machine", "[equations]") {
+  const std::vector<Sphere> field = SphereField(100, 20261122);
+  REQUIRE(field.size() == 100);
+  CHECK(field[0].radius == 0.3);
+  // The generator's integer arithmetic is exact; these are its first numbers.
+  Random random(20261122);
+  const double x = random.Between(-3, 3);
+  CHECK(field[0].center.x == x);
+  CHECK(x >= -3);
+  CHECK(x < 3);
+}

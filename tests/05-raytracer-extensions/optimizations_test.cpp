@@ -1,0 +1,138 @@
+// The chapter's optimisations: every exact one, alone or all together, draws every
+// figure byte for byte as without any.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "cgfs/error.h"
+#include "golden.h"
+#include "meshes.h"
+#include "printing.h"
+#include "scenes.h"
+
+using cgfs::test::FindFigure;
+
+namespace {
+
+// Sets the optimisations the figures are drawn with, for as long as it lives.
+class ChosenFor {
+ public:
+  explicit ChosenFor(const Optimizations& optimizations) : saved_(ChosenOptimizations()) {
+    ChosenOptimizations() = optimizations;
+  }
+  ~ChosenFor() { ChosenOptimizations() = saved_; }
+  ChosenFor(const ChosenFor&) = delete;
+  ChosenFor& operator=(const ChosenFor&) = delete;
+
+ private:
+  Optimizations saved_;
+};
+
+cgfs::Image Draw(const std::string& figure, int side, const Optimizations& optimizations) {
+  const ChosenFor chosen(optimizations);
+  return cgfs::RenderFigure(FindFigure(Figures(), figure), side, side).GetImage();
+}
+
+}  // namespace
+
+TEST_CASE("ParseOptimizations: none, all, and lists", "[optimizations]") {
+  const Optimizations none = ParseOptimizations("none");
+  CHECK(none.threads == 1);
+  CHECK_FALSE(none.cache);
+  CHECK_FALSE(none.bvh);
+  const Optimizations all = ParseOptimizations("all");
+  CHECK(all.threads >= 1);
+  CHECK(all.cache);
+  CHECK(all.shadow_any_hit);
+  CHECK(all.shadow_coherence);
+  CHECK(all.bvh);
+  CHECK_FALSE(all.subsampling);  // approximate, so never part of "all"
+  const Optimizations some = ParseOptimizations("bvh,subsampling");
+  CHECK(some.bvh);
+  CHECK(some.subsampling);
+  CHECK_FALSE(some.cache);
+  CHECK_THROWS_AS(ParseOptimizations("bvh,fast"), cgfs::UsageError);
+  CHECK_THROWS_AS(ParseOptimizations(""), cgfs::UsageError);
+  CHECK_THROWS_AS(ParseOptimizations("bvh,"), cgfs::UsageError);
+}
+
+TEST_CASE("every exact optimisation draws every figure byte for byte as none does",
+          "[optimizations]") {
+  Optimizations threads;
+  threads.threads = 3;  // more workers than this machine may have cores: still the same
+  Optimizations cache;
+  cache.cache = true;
+  Optimizations any_hit;
+  any_hit.shadow_any_hit = true;
+  Optimizations coherence;
+  coherence.shadow_coherence = true;
+  Optimizations bvh;
+  bvh.bvh = true;
+  Optimizations all = AllOptimizations();
+  all.threads = 3;
+  const std::pair<const char*, Optimizations> switches[] = {
+      {"threads", threads},   {"cache", cache}, {"shadow-any-hit", any_hit},
+      {"shadow-coherence", coherence}, {"bvh", bvh}, {"all", all}};
+
+  for (const cgfs::Figure& figure : Figures()) {
+    // Without the hierarchy the big scenes take a while: draw them small.
+    const bool big = figure.name == "sphere-field-10000" || figure.name == "sphere-field-100000" ||
+                     figure.name == "torus-mesh";
+    const int side = big ? 20 : 64;
+    const cgfs::Image plain = Draw(figure.name, side, {});
+    for (const auto& [name, optimizations] : switches) {
+      INFO(figure.name << " at " << side << "x" << side << " with " << name);
+      CHECK(Draw(figure.name, side, optimizations) == plain);
+    }
+  }
+}
+
+TEST_CASE("Bvh finds what the loop over every object finds", "[optimizations]") {
+  // Random rays through the sphere field and the torus, from the camera and from
+  // points among the objects: the same object, the same t, the same yes or no.
+  for (Scene scene : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
+    // The torus has 102 400 triangles for the loop to go through: fewer rays.
+    const int rays = scene.objects.size() > 10000 ? 300 : 3000;
+    Scene with_bvh = scene;
+    PrepareScene(scene, {});
+    Optimizations bvh;
+    bvh.bvh = true;
+    PrepareScene(with_bvh, bvh);
+    Random random(11);
+    for (int i = 0; i < rays; ++i) {
+      const Vec3 O = i % 2 == 0 ? Vec3{0, 0, 0}
+                                : Vec3{random.Between(-3, 3), random.Between(-1, 2),
+                                       random.Between(4, 10)};
+      const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(-0.5, 1)};
+      const double t_max = i % 3 == 0 ? 1.0 : cgfs::kInf;
+      const Hit plain = ClosestIntersection(O, D, 0.001, t_max, scene);
+      const Hit fast = ClosestIntersection(O, D, 0.001, t_max, with_bvh);
+      REQUIRE(plain.object == fast.object);
+      REQUIRE(plain.t == fast.t);
+      int plain_object = -1;
+      int fast_object = -1;
+      REQUIRE(AnyIntersection(O, D, 0.001, t_max, scene, plain_object) ==
+              AnyIntersection(O, D, 0.001, t_max, with_bvh, fast_object));
+      REQUIRE((plain_object >= 0) == (plain.object >= 0));
+    }
+  }
+}
+
+TEST_CASE("IsInShadow: coherence and any-hit give Listing 4-3's answer", "[optimizations]") {
+  Scene plain = SceneSphereField(1000);
+  Scene fast = plain;
+  PrepareScene(plain, {});
+  PrepareScene(fast, AllOptimizations());
+  Random random(5);
+  long shadowed = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Vec3 P{random.Between(-3, 3), random.Between(-0.99, 2), random.Between(5, 12)};
+    const Vec3 L = Vec3{2, 1, 0} - P;  // towards the point light
+    const bool expected = ClosestIntersection(P, L, plain.epsilon, 1, plain).object >= 0;
+    REQUIRE(IsInShadow(P, L, 1, 1, plain) == expected);
+    REQUIRE(IsInShadow(P, L, 1, 1, fast) == expected);
+    shadowed += expected;
+  }
+  CHECK(shadowed > 500);  // the test sees both answers
+  CHECK(shadowed < 4500);
+}
