@@ -5,10 +5,15 @@
 
 namespace {
 
-constexpr int kLeafSize = 2;
+constexpr int kLeafSize = 4;
 
 Vec3 Centre(const Box& box) {
   return (box.min + box.max) * 0.5;
+}
+
+double SurfaceArea(const Box& box) {
+  const Vec3 size = box.max - box.min;
+  return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
 }
 
 int LongestAxis(const Vec3& size) {
@@ -82,6 +87,31 @@ void Bvh::Build(int first, int count, const std::vector<Box>& boxes, int depth) 
     nodes_[index].count = count;
     return;
   }
+  // An object larger than all the others together (chapter 4's ground, a sphere of
+  // radius 5000) would make every box above it as large as itself, and every ray
+  // would enter them all: it gets a leaf of its own, beside the tree of the rest.
+  int largest = first;
+  for (int i = first; i < first + count; ++i) {
+    if (SurfaceArea(boxes[order_[i]]) > SurfaceArea(boxes[order_[largest]])) {
+      largest = i;
+    }
+  }
+  Box others;
+  for (int i = first; i < first + count; ++i) {
+    if (i != largest) {
+      others = Union(others, boxes[order_[i]]);
+    }
+  }
+  // (At most 24 such levels, so that the depth, and the traversal stack with it,
+  // stays under 64 even for objects nested like Russian dolls.)
+  if (depth <= 24 && SurfaceArea(boxes[order_[largest]]) > SurfaceArea(others)) {
+    std::swap(order_[first], order_[largest]);
+    Build(first, 1, boxes, depth + 1);
+    nodes_[index].second_child = static_cast<int>(nodes_.size());
+    Build(first + 1, count - 1, boxes, depth + 1);
+    return;
+  }
+
   const int axis = LongestAxis(centres.max - centres.min);
   const int half = count / 2;
   std::nth_element(order_.begin() + first, order_.begin() + first + half,
@@ -96,11 +126,21 @@ void Bvh::Build(int first, int count, const std::vector<Box>& boxes, int depth) 
 }
 
 // Visits the nodes whose box the ray enters no later than the best hit so far, the
-// nearer child first, so that the farther one is often skipped. Halving splits keep
-// the tree's depth, and so the stack, under 64 for any scene that fits in memory.
+// nearer child first, so that the farther one is often skipped. The tree's depth,
+// and so the stack, stays under 64 (Build) for any scene that fits in memory.
 Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
   Hit best;
   object = -1;
+  if (nodes_.size() == 1) {  // all in one leaf: a box around a list only costs a test
+    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
+      const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
+      if (hit.t < best.t) {
+        best = hit;
+        object = candidate;
+      }
+    }
+    return best;
+  }
   const Vec3 inv_D = 1.0 / ray.D;
   struct Entry {
     int node;
@@ -149,6 +189,15 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   object = -1;
+  if (nodes_.size() == 1) {
+    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
+      if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
+        object = candidate;
+        return true;
+      }
+    }
+    return false;
+  }
   if (order_.empty()) {
     return false;
   }

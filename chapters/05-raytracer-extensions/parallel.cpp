@@ -18,8 +18,10 @@ void ForEachTile(int width, int height, int threads,
 
   auto work = [&] {
     for (int index = next++; index < tiles; index = next++) {
-      const int x = -width / 2 + (index % columns) * kTileSide;
-      const int y = -height / 2 + (index / columns) * kTileSide;
+      // Down each column of tiles first: the tiles drawn at the same time are then
+      // above one another, and never write to the same cache line of the image.
+      const int x = -width / 2 + (index / rows) * kTileSide;
+      const int y = -height / 2 + (index % rows) * kTileSide;
       draw_tile({x, std::min(x + kTileSide, width / 2), y, std::min(y + kTileSide, height / 2)});
       cgfs::ReportProgress(static_cast<double>(++done) / tiles);
     }

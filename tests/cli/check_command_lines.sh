@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of the command lines: exit statuses, one-line errors, and no
-# file written on bad input. Usage: check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE
+# file written on bad input. Usage:
+#   check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE [CHAPTER_5_PROGRAM]
 set -u
-program=$1 compare=$2
+program=$1 compare=$2 chapter5=${3:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -33,6 +34,31 @@ expect 0 "renders PPM" "$program" --output "$figures" --figure fig-2-11 --format
 expect 0 "renders a small canvas" "$program" --output "$work/small" --size 300x200 --figure fig-2-11
 expect 0 "--help" "$program" --help
 expect 0 "--list" "$program" --list
+
+# Progress is shown only on a terminal: a render into a file or a pipe writes
+# nothing to standard error.
+"$program" --output "$work/quiet" --figure fig-2-11 >/dev/null 2>"$work/quiet.err"
+if [ -s "$work/quiet.err" ]; then
+  echo "FAIL: a render wrote to standard error when it is not a terminal:"
+  cat "$work/quiet.err"
+  failures=$((failures + 1))
+else
+  echo "ok: nothing on standard error when it is not a terminal"
+fi
+
+# Chapter 5's own options (chapters/05-raytracer-extensions/options.h).
+if [ -n "$chapter5" ]; then
+  expect 0 "chapter 5: --optimizations none --threads 1" "$chapter5" --output "$work/ch5" \
+    --size 40x40 --figure thin-wires --optimizations none --threads 1
+  expect 0 "chapter 5: a list of optimisations" "$chapter5" --output "$work/ch5" \
+    --size 40x40 --figure thin-wires --optimizations bvh,threads,subsampling --threads 3
+  expect 2 "chapter 5: unknown optimisation" "$chapter5" --optimizations bvh,fast --output "$work/bad"
+  expect 2 "chapter 5: empty list" "$chapter5" --optimizations "" --output "$work/bad"
+  expect 2 "chapter 5: zero threads" "$chapter5" --threads 0 --output "$work/bad"
+  expect 2 "chapter 5: threads not a number" "$chapter5" --threads many --output "$work/bad"
+  expect 2 "chapter 5: --threads 4 without threads" "$chapter5" --threads 4 \
+    --optimizations cache --output "$work/bad"
+fi
 
 expect 2 "unknown option" "$program" --colour red --output "$work/bad"
 expect 2 "odd size" "$program" --size 601x600 --output "$work/bad"

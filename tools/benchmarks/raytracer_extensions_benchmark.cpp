@@ -1,0 +1,223 @@
+// Chapter 5's optimisations, each alone and all together, timed with Google
+// Benchmark (run by scripts/benchmark, which also plots the sphere fields).
+//
+//   Camera/<switches>              Figure 5-1 at 600x600
+//   SphereField/<count>/<bvh>      the sphere fields at 600x600, one thread
+//   SphereFieldSmall/<count>/<bvh> the same at 150x150, where the plain loop can
+//                                  still be timed at 10 000 spheres
+//   SphereFieldPrimary/<count>     only the primary rays at 600x600, one thread:
+//                                  our hierarchy, and Embree's where it is installed
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "raytracer.h"
+#include "scenes.h"
+
+#if CGFS_HAVE_EMBREE
+#include <embree3/rtcore.h>
+#endif
+
+namespace {
+
+struct Switches {
+  const char* name;
+  Optimizations optimizations;
+};
+
+std::vector<Switches> EachSwitch() {
+  const Optimizations all = AllOptimizations();
+  Optimizations threads;
+  threads.threads = all.threads;
+  Optimizations cache;
+  cache.cache = true;
+  Optimizations any_hit;
+  any_hit.shadow_any_hit = true;
+  Optimizations coherence;
+  coherence.shadow_coherence = true;
+  Optimizations shadows = any_hit;
+  shadows.shadow_coherence = true;
+  Optimizations bvh;
+  bvh.bvh = true;
+  Optimizations subsampling;
+  subsampling.subsampling = true;
+  Optimizations all_one_thread = all;
+  all_one_thread.threads = 1;
+  return {{"none", {}},
+          {"threads", threads},
+          {"cache", cache},
+          {"shadow-any-hit", any_hit},
+          {"shadow-coherence", coherence},
+          {"shadow-any-hit+coherence", shadows},
+          {"bvh", bvh},
+          {"subsampling", subsampling},
+          {"all-but-threads", all_one_thread},
+          {"all", all}};
+}
+
+void Render(benchmark::State& state, const Scene& scene, int side,
+            const Optimizations& optimizations) {
+  Canvas canvas(side, side);
+  for (auto _ : state) {
+    RenderScene(scene, 3, canvas, optimizations);
+    benchmark::DoNotOptimize(canvas);
+  }
+  state.counters["pixels/s"] =
+      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Only the primary rays: the closest hit for every pixel, no shading.
+void TracePrimaryRays(benchmark::State& state, const Scene& scene, int side) {
+  Scene prepared = scene;
+  Optimizations bvh;
+  bvh.bvh = true;
+  bvh.cache = true;
+  PrepareScene(prepared, bvh);
+  const Canvas canvas(side, side);
+  for (auto _ : state) {
+    long hits = 0;
+    for (int x = -side / 2; x < side / 2; ++x) {
+      for (int y = -side / 2; y < side / 2; ++y) {
+        const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
+        hits += ClosestIntersection(prepared.camera.position, D, 1, cgfs::kInf, prepared).object >= 0;
+      }
+    }
+    benchmark::DoNotOptimize(hits);
+  }
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+#if CGFS_HAVE_EMBREE
+// The same spheres as Embree sphere points (x, y, z, r in single precision), the
+// same primary rays, one at a time (rtcIntersect1), on one thread.
+void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int side) {
+  RTCDevice device = rtcNewDevice("threads=1");
+  RTCScene embree_scene = rtcNewScene(device);
+  std::vector<const Sphere*> spheres;
+  for (const auto& object : scene.objects) {
+    if (const auto* sphere = dynamic_cast<const Sphere*>(object.get())) {
+      spheres.push_back(sphere);
+    }
+  }
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+  auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), spheres.size()));
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    points[4 * i + 0] = static_cast<float>(spheres[i]->center.x);
+    points[4 * i + 1] = static_cast<float>(spheres[i]->center.y);
+    points[4 * i + 2] = static_cast<float>(spheres[i]->center.z);
+    points[4 * i + 3] = static_cast<float>(spheres[i]->radius);
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(embree_scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(embree_scene);
+
+  const Canvas canvas(side, side);
+  RTCIntersectContext context;
+  for (auto _ : state) {
+    long hits = 0;
+    for (int x = -side / 2; x < side / 2; ++x) {
+      for (int y = -side / 2; y < side / 2; ++y) {
+        const Vec3 D = CameraRayDirection(x, y, canvas, scene);
+        RTCRayHit ray{};
+        ray.ray.org_x = static_cast<float>(scene.camera.position.x);
+        ray.ray.org_y = static_cast<float>(scene.camera.position.y);
+        ray.ray.org_z = static_cast<float>(scene.camera.position.z);
+        ray.ray.dir_x = static_cast<float>(D.x);
+        ray.ray.dir_y = static_cast<float>(D.y);
+        ray.ray.dir_z = static_cast<float>(D.z);
+        ray.ray.tnear = 1;
+        ray.ray.tfar = std::numeric_limits<float>::infinity();
+        ray.ray.mask = ~0U;
+        ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcInitIntersectContext(&context);
+        rtcIntersect1(embree_scene, &context, &ray);
+        hits += ray.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      }
+    }
+    benchmark::DoNotOptimize(hits);
+  }
+  state.counters["rays/s"] =
+      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+  rtcReleaseScene(embree_scene);
+  rtcReleaseDevice(device);
+}
+#endif
+
+void RegisterAll() {
+  const auto camera = std::make_shared<Scene>(SceneCamera());
+  for (const Switches& each : EachSwitch()) {
+    benchmark::RegisterBenchmark(("Camera/" + std::string(each.name)).c_str(),
+                                 [camera, each](benchmark::State& state) {
+                                   Render(state, *camera, 600, each.optimizations);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  }
+
+  Optimizations with_bvh = AllOptimizations();
+  with_bvh.threads = 1;
+  Optimizations without_bvh = with_bvh;
+  without_bvh.bvh = false;
+  for (const int count : {100, 1000, 10000, 100000}) {
+    const auto field = std::make_shared<Scene>(SceneSphereField(count));
+    const std::string n = std::to_string(count);
+    benchmark::RegisterBenchmark(("SphereField/" + n + "/bvh").c_str(),
+                                 [field, with_bvh](benchmark::State& state) {
+                                   Render(state, *field, 600, with_bvh);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("SphereFieldSmall/" + n + "/bvh").c_str(),
+                                 [field, with_bvh](benchmark::State& state) {
+                                   Render(state, *field, 150, with_bvh);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    if (count <= 10000) {  // 100 000 spheres without the hierarchy: minutes per frame
+      benchmark::RegisterBenchmark(("SphereFieldSmall/" + n + "/no-bvh").c_str(),
+                                   [field, without_bvh](benchmark::State& state) {
+                                     Render(state, *field, 150, without_bvh);
+                                   })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+    benchmark::RegisterBenchmark(("SphereFieldPrimary/" + n + "/ours").c_str(),
+                                 [field](benchmark::State& state) {
+                                   TracePrimaryRays(state, *field, 600);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+#if CGFS_HAVE_EMBREE
+    benchmark::RegisterBenchmark(("SphereFieldPrimary/" + n + "/embree").c_str(),
+                                 [field](benchmark::State& state) {
+                                   TracePrimaryRaysEmbree(state, *field, 600);
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+#endif
+  }
+#if !CGFS_HAVE_EMBREE
+  std::fprintf(stderr,
+               "benchmark-05: built without Embree (Debian libembree-dev), so the "
+               "SphereFieldPrimary/*/embree benchmarks are skipped\n");
+#endif
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  RegisterAll();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
+    return 1;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
