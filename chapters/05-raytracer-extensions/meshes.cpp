@@ -25,7 +25,7 @@ double Random::Next() {
 }
 
 std::vector<Sphere> SphereField(int count, std::uint64_t seed) {
-  const Color palette[] = {cgfs::kRed, cgfs::kGreen, cgfs::kBlue, {255, 255, 255},
+  const Color palette[] = {cgfs::kRed,    cgfs::kGreen,  cgfs::kBlue, {255, 255, 255},
                            {255, 160, 0}, cgfs::kPurple, cgfs::kCyan};
   const double radius = 0.3 * std::cbrt(100.0 / count);
   Random random(seed);

@@ -13,8 +13,8 @@ Box Intersection(const Box& a, const Box& b) {
 
 Box Padded(const Box& box) {
   const Vec3 size = box.max - box.min;
-  const double scale = std::max({size.x, size.y, size.z, glm::length(box.min),
-                                 glm::length(box.max)});
+  const double scale =
+      std::max({size.x, size.y, size.z, glm::length(box.min), glm::length(box.max)});
   const Vec3 pad(1e-9 * scale + 1e-12);
   return {box.min - pad, box.max + pad};
 }

@@ -53,10 +53,10 @@ Box Padded(const Box& box);
 // What a surface looks like, whatever its shape.
 struct Surface {
   Color color{0, 0, 0};
-  double specular = -1;          // "Specular Reflection": the shininess exponent s; -1 means matte
-  double reflective = 0;         // "Mirrors and Reflection": 0 not at all .. 1 a perfect mirror
-  double transparency = 0;       // "Transparency": 0 opaque .. 1 nothing but what lies behind
-  double refractive_index = 1;   // "Refraction": of the material inside the surface
+  double specular = -1;         // "Specular Reflection": the shininess exponent s; -1 means matte
+  double reflective = 0;        // "Mirrors and Reflection": 0 not at all .. 1 a perfect mirror
+  double transparency = 0;      // "Transparency": 0 opaque .. 1 nothing but what lies behind
+  double refractive_index = 1;  // "Refraction": of the material inside the surface
 };
 
 class Object {

@@ -15,4 +15,5 @@ inline constexpr int kTileSide = 16;
 
 // Calls draw_tile once for every tile of a width x height canvas, from `threads`
 // workers (1: all on this thread, in order). draw_tile must only write its own pixels.
-void ForEachTile(int width, int height, int threads, const std::function<void(const Tile&)>& draw_tile);
+void ForEachTile(int width, int height, int threads,
+                 const std::function<void(const Tile&)>& draw_tile);

@@ -51,8 +51,8 @@ Hit ClosestIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max
   return closest;
 }
 
-bool AnyIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max,
-                     const Scene& scene, int& object) {
+bool AnyIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max, const Scene& scene,
+                     int& object) {
   const Ray ray = MakeRay(O, D, scene);
   if (scene.bvh != nullptr) {
     return scene.bvh->Any(ray, t_min, t_max, object);
@@ -232,8 +232,8 @@ void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas,
     for (int x = tile.x_begin; x < tile.x_end; ++x) {
       for (int y = tile.y_begin; y < tile.y_end; ++y) {
         const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
-        const Color color = TraceRay(prepared.camera.position, D, 1, cgfs::kInf,
-                                     recursion_depth, prepared);
+        const Color color =
+            TraceRay(prepared.camera.position, D, 1, cgfs::kInf, recursion_depth, prepared);
         canvas.PutPixel(x, y, color);
       }
     }

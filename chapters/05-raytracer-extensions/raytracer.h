@@ -85,8 +85,8 @@ Hit ClosestIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max
 
 // "Shadow Optimizations": whether anything lies on O + tD with t in [t_min, t_max],
 // stopping at the first object found (sets `object` to its index, or -1).
-bool AnyIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max,
-                     const Scene& scene, int& object);
+bool AnyIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max, const Scene& scene,
+                     int& object);
 
 // Is light `light_index` hidden from P (L from P towards it, t up to t_max)? With
 // the shadow optimisations: the object that hid it last time on this thread is

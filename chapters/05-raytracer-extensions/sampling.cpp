@@ -93,8 +93,8 @@ void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas) {
         const int dx = odd_x(x) ? 1 : 0;
         const int dy = odd_y(y) ? 1 : 0;
         int common = -2;
-        for (const auto& [nx, ny] : {std::pair{x - dx, y - dy}, {x + dx, y - dy},
-                                     {x - dx, y + dy}, {x + dx, y + dy}}) {
+        for (const auto& [nx, ny] :
+             {std::pair{x - dx, y - dy}, {x + dx, y - dy}, {x - dx, y + dy}, {x + dx, y + dy}}) {
           const int object = hit_object.Contains(nx, ny) ? hit_object(nx, ny) : -3;
           common = (common == -2 || common == object) ? object : -3;
         }
@@ -121,15 +121,14 @@ void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas) {
 void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas) {
   Scene prepared = scene;
   PrepareScene(prepared, ChosenOptimizations());
-  ForEachTile(canvas.Width(), canvas.Height(), prepared.optimizations.threads,
-              [&](const Tile& tile) {
-                for (int x = tile.x_begin; x < tile.x_end; ++x) {
-                  for (int y = tile.y_begin; y < tile.y_end; ++y) {
-                    canvas.PutPixel(x, y,
-                                    SupersampledColor(x, y, n, recursion_depth, prepared, canvas));
-                  }
-                }
-              });
+  ForEachTile(
+      canvas.Width(), canvas.Height(), prepared.optimizations.threads, [&](const Tile& tile) {
+        for (int x = tile.x_begin; x < tile.x_end; ++x) {
+          for (int y = tile.y_begin; y < tile.y_end; ++y) {
+            canvas.PutPixel(x, y, SupersampledColor(x, y, n, recursion_depth, prepared, canvas));
+          }
+        }
+      });
 }
 
 long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas) {

@@ -28,7 +28,7 @@ const Color kGlass{230, 240, 255};
 // A rotation about the X axis by `degrees` (counter-clockwise looking from +X).
 glm::dmat3 RotationAboutX(double degrees) {
   const double a = degrees * std::numbers::pi / 180;
-  return glm::transpose(glm::dmat3(1, 0, 0,                        //
+  return glm::transpose(glm::dmat3(1, 0, 0,                       //
                                    0, std::cos(a), -std::sin(a),  //
                                    0, std::sin(a), std::cos(a)));
 }
@@ -79,7 +79,7 @@ Scene SceneCamera() {
   Scene scene = ChapterSpheresOnBlack();
   scene.camera.position = {3, 0, 1};
   scene.camera.rotation = glm::transpose(glm::dmat3(0.7071, 0, -0.7071,  //
-                                                    0, 1, 0,              //
+                                                    0, 1, 0,             //
                                                     0.7071, 0, 0.7071));
   return scene;
 }
@@ -120,7 +120,8 @@ Scene SceneTorusMesh() {
   const Vec3 place{0, 0.4, 6};
   for (const Triangle& triangle : TorusMesh(1.6, 0.55, 320, 160, {255, 120, 40})) {
     scene.Add(Triangle{tilt * triangle.A + place, tilt * triangle.B + place,
-                       tilt * triangle.C + place, triangle.surface.color, triangle.surface.specular});
+                       tilt * triangle.C + place, triangle.surface.color,
+                       triangle.surface.specular});
   }
   scene.Add(Sphere{{0, -5001, 0}, 5000, {110, 170, 110}, 1000});
   scene.lights = ChapterLights();
@@ -165,7 +166,8 @@ Scene SceneCsgOperations() {
 Scene SceneCsgLens() {
   Scene scene;
   scene.background_color = {200, 220, 255};
-  scene.objects.push_back(Lens({0, 0.3, 5}, glm::normalize(Vec3{1, 0.3, -1}), {120, 160, 255}, 0, 1));
+  scene.objects.push_back(
+      Lens({0, 0.3, 5}, glm::normalize(Vec3{1, 0.3, -1}), {120, 160, 255}, 0, 1));
   scene.Add(Sphere{{0, -5001, 0}, 5000, kGrey, 1000});
   scene.lights = ChapterLights();
   return scene;
@@ -189,9 +191,10 @@ Scene SceneCsgNested() {
   // cut down to what lies inside a fourth.
   const auto joined = Csg(CsgOperation::kUnion, Ball({-0.5, 0.3, 6}, 1, cgfs::kRed),
                           Ball({0.5, 0.3, 6}, 1, {255, 160, 0}));
-  const auto bitten = Csg(CsgOperation::kDifference, joined, Ball({0.2, 1.1, 5.5}, 0.6, cgfs::kBlue));
-  scene.objects.push_back(Csg(CsgOperation::kIntersection, bitten,
-                              Ball({0, 0.3, 6.5}, 1.45, cgfs::kGreen)));
+  const auto bitten =
+      Csg(CsgOperation::kDifference, joined, Ball({0.2, 1.1, 5.5}, 0.6, cgfs::kBlue));
+  scene.objects.push_back(
+      Csg(CsgOperation::kIntersection, bitten, Ball({0, 0.3, 6.5}, 1.45, cgfs::kGreen)));
   scene.Add(Sphere{{0, -5001, 0}, 5000, kGrey, 1000});
   scene.lights = ChapterLights();
   return scene;
@@ -233,9 +236,10 @@ std::vector<cgfs::Figure> Figures() {
        [](Canvas& canvas) { RenderScene(SceneCamera(), 3, canvas); }},
   };
   for (const int count : {100, 1000, 10000, 100000}) {
-    figures.push_back({"sphere-field-" + std::to_string(count),
-                       std::to_string(count) + " small spheres, placed from a fixed seed",
-                       [count](Canvas& canvas) { RenderScene(SceneSphereField(count), 3, canvas); }});
+    figures.push_back(
+        {"sphere-field-" + std::to_string(count),
+         std::to_string(count) + " small spheres, placed from a fixed seed",
+         [count](Canvas& canvas) { RenderScene(SceneSphereField(count), 3, canvas); }});
   }
   const std::vector<cgfs::Figure> more = {
       {"triangles", "a mirror pyramid of four triangles behind the spheres",
@@ -267,11 +271,10 @@ std::vector<cgfs::Figure> Figures() {
   };
   figures.insert(figures.end(), more.begin(), more.end());
   for (const int n : {2, 3, 4}) {  // n = 1 is fig-5-1-camera
-    figures.push_back({"supersampling-" + std::to_string(n * n),
-                       "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
-                       [n](Canvas& canvas) {
-                         RenderSceneSupersampled(SceneCamera(), 3, n, canvas);
-                       }});
+    figures.push_back(
+        {"supersampling-" + std::to_string(n * n),
+         "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
+         [n](Canvas& canvas) { RenderSceneSupersampled(SceneCamera(), 3, n, canvas); }});
   }
   figures.push_back({"supersampling-adaptive",
                      "Figure 5-1 with 16 rays only where neighbours differ",

@@ -42,7 +42,8 @@ std::string ProgressDisplay::Line(const std::string& figure, double fraction, do
   return "rendering " + figure + text;
 }
 
-ProgressDisplay::ProgressDisplay(std::string figure, bool enabled) : state_(std::make_unique<State>()) {
+ProgressDisplay::ProgressDisplay(std::string figure, bool enabled)
+    : state_(std::make_unique<State>()) {
   current_fraction = -1;
   state_->figure = std::move(figure);
   if (!enabled) {

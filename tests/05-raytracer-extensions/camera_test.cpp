@@ -21,8 +21,8 @@ TEST_CASE("CameraRayDirection turns the chapter-2 direction with the camera", "[
   CheckNear(CameraRayDirection(0, 300, canvas, scene), {-0.7071, 0.5, 0.7071});
   // The default camera leaves directions as they are.
   const Scene plain = SceneReflections();
-  CHECK(CameraRayDirection(150, -75, canvas, plain) == CanvasToViewport(150, -75, canvas,
-                                                                        plain.viewport));
+  CHECK(CameraRayDirection(150, -75, canvas, plain) ==
+        CanvasToViewport(150, -75, canvas, plain.viewport));
 }
 
 TEST_CASE("pinned pixels of Figure 5-1, the camera at (3, 0, 1) turned 45 degrees", "[figures]") {

@@ -24,8 +24,7 @@ std::vector<Span> Spans(const Sphere& sphere, std::initializer_list<std::pair<do
 
 }  // namespace
 
-TEST_CASE("CombineSpans: union, intersection and difference of [2, 6] and [4, 8]",
-          "[equations]") {
+TEST_CASE("CombineSpans: union, intersection and difference of [2, 6] and [4, 8]", "[equations]") {
   const auto a = Spans(kA, {{2, 6}});
   const auto b = Spans(kB, {{4, 8}});
 
@@ -54,8 +53,8 @@ TEST_CASE("CombineSpans: union, intersection and difference of [2, 6] and [4, 8]
 }
 
 TEST_CASE("CombineSpans: a hole through the middle leaves two spans", "[equations]") {
-  const auto cut = CombineSpans(CsgOperation::kDifference, Spans(kA, {{2, 8}}),
-                                Spans(kB, {{4, 5}}));
+  const auto cut =
+      CombineSpans(CsgOperation::kDifference, Spans(kA, {{2, 8}}), Spans(kB, {{4, 5}}));
   REQUIRE(cut.size() == 2);
   CHECK(cut[0].in.t == 2);
   CHECK(cut[0].out.t == 4);

@@ -70,9 +70,12 @@ TEST_CASE("every exact optimisation draws every figure byte for byte as none doe
   bvh.bvh = true;
   Optimizations all = AllOptimizations();
   all.threads = 3;
-  const std::pair<const char*, Optimizations> switches[] = {
-      {"threads", threads},   {"cache", cache}, {"shadow-any-hit", any_hit},
-      {"shadow-coherence", coherence}, {"bvh", bvh}, {"all", all}};
+  const std::pair<const char*, Optimizations> switches[] = {{"threads", threads},
+                                                            {"cache", cache},
+                                                            {"shadow-any-hit", any_hit},
+                                                            {"shadow-coherence", coherence},
+                                                            {"bvh", bvh},
+                                                            {"all", all}};
 
   for (const cgfs::Figure& figure : Figures()) {
     // Without the hierarchy the big scenes take a while: draw them small.
@@ -100,9 +103,9 @@ TEST_CASE("Bvh finds what the loop over every object finds", "[optimizations]") 
     PrepareScene(with_bvh, bvh);
     Random random(11);
     for (int i = 0; i < rays; ++i) {
-      const Vec3 O = i % 2 == 0 ? Vec3{0, 0, 0}
-                                : Vec3{random.Between(-3, 3), random.Between(-1, 2),
-                                       random.Between(4, 10)};
+      const Vec3 O =
+          i % 2 == 0 ? Vec3{0, 0, 0}
+                     : Vec3{random.Between(-3, 3), random.Between(-1, 2), random.Between(4, 10)};
       const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(-0.5, 1)};
       const double t_max = i % 3 == 0 ? 1.0 : cgfs::kInf;
       const Hit plain = ClosestIntersection(O, D, 0.001, t_max, scene);

@@ -35,8 +35,7 @@ TEST_CASE("RefractRay: from air into water at 60 degrees, 40.628 degrees", "[equ
   CHECK(std::sin(60 * std::numbers::pi / 180) / std::sqrt(1 - T->y * T->y) == Approx(1.33));
 }
 
-TEST_CASE("RefractRay: straight through along the normal, whatever the indices",
-          "[equations]") {
+TEST_CASE("RefractRay: straight through along the normal, whatever the indices", "[equations]") {
   CheckNear(*RefractRay({0, -2, 0}, {0, 1, 0}, 1.0, 1.5), {0, -1, 0});
 }
 

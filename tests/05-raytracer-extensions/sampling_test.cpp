@@ -88,6 +88,6 @@ TEST_CASE("RenderSceneSupersampled: edges get colours in between", "[sampling]")
 TEST_CASE("RenderSceneAdaptive subdivides edges only", "[sampling]") {
   Canvas canvas(600, 600);
   const long subdivided = RenderSceneAdaptive(SceneCamera(), 3, canvas);
-  CHECK(subdivided > 1000);               // every outline
-  CHECK(subdivided < 600 * 600 / 10);     // but not the smooth insides
+  CHECK(subdivided > 1000);            // every outline
+  CHECK(subdivided < 600 * 600 / 10);  // but not the smooth insides
 }

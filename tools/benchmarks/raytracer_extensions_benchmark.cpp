@@ -65,8 +65,8 @@ void Render(benchmark::State& state, const Scene& scene, int side,
     RenderScene(scene, 3, canvas, optimizations);
     benchmark::DoNotOptimize(canvas);
   }
-  state.counters["pixels/s"] =
-      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(side) * side,
+                                                  benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // Only the primary rays: the closest hit for every pixel, no shading.
@@ -82,13 +82,14 @@ void TracePrimaryRays(benchmark::State& state, const Scene& scene, int side) {
     for (int x = -side / 2; x < side / 2; ++x) {
       for (int y = -side / 2; y < side / 2; ++y) {
         const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
-        hits += ClosestIntersection(prepared.camera.position, D, 1, cgfs::kInf, prepared).object >= 0;
+        hits +=
+            ClosestIntersection(prepared.camera.position, D, 1, cgfs::kInf, prepared).object >= 0;
       }
     }
     benchmark::DoNotOptimize(hits);
   }
-  state.counters["rays/s"] =
-      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["rays/s"] = benchmark::Counter(static_cast<double>(side) * side,
+                                                benchmark::Counter::kIsIterationInvariantRate);
 }
 
 #if CGFS_HAVE_EMBREE
@@ -142,8 +143,8 @@ void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int sid
     }
     benchmark::DoNotOptimize(hits);
   }
-  state.counters["rays/s"] =
-      benchmark::Counter(static_cast<double>(side) * side, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["rays/s"] = benchmark::Counter(static_cast<double>(side) * side,
+                                                benchmark::Counter::kIsIterationInvariantRate);
   rtcReleaseScene(embree_scene);
   rtcReleaseDevice(device);
 }
@@ -167,16 +168,14 @@ void RegisterAll() {
   for (const int count : {100, 1000, 10000, 100000}) {
     const auto field = std::make_shared<Scene>(SceneSphereField(count));
     const std::string n = std::to_string(count);
-    benchmark::RegisterBenchmark(("SphereField/" + n + "/bvh").c_str(),
-                                 [field, with_bvh](benchmark::State& state) {
-                                   Render(state, *field, 600, with_bvh);
-                                 })
+    benchmark::RegisterBenchmark(
+        ("SphereField/" + n + "/bvh").c_str(),
+        [field, with_bvh](benchmark::State& state) { Render(state, *field, 600, with_bvh); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
-    benchmark::RegisterBenchmark(("SphereFieldSmall/" + n + "/bvh").c_str(),
-                                 [field, with_bvh](benchmark::State& state) {
-                                   Render(state, *field, 150, with_bvh);
-                                 })
+    benchmark::RegisterBenchmark(
+        ("SphereFieldSmall/" + n + "/bvh").c_str(),
+        [field, with_bvh](benchmark::State& state) { Render(state, *field, 150, with_bvh); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
     if (count <= 10000) {  // 100 000 spheres without the hierarchy: minutes per frame
@@ -187,17 +186,15 @@ void RegisterAll() {
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
     }
-    benchmark::RegisterBenchmark(("SphereFieldPrimary/" + n + "/ours").c_str(),
-                                 [field](benchmark::State& state) {
-                                   TracePrimaryRays(state, *field, 600);
-                                 })
+    benchmark::RegisterBenchmark(
+        ("SphereFieldPrimary/" + n + "/ours").c_str(),
+        [field](benchmark::State& state) { TracePrimaryRays(state, *field, 600); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
 #if CGFS_HAVE_EMBREE
-    benchmark::RegisterBenchmark(("SphereFieldPrimary/" + n + "/embree").c_str(),
-                                 [field](benchmark::State& state) {
-                                   TracePrimaryRaysEmbree(state, *field, 600);
-                                 })
+    benchmark::RegisterBenchmark(
+        ("SphereFieldPrimary/" + n + "/embree").c_str(),
+        [field](benchmark::State& state) { TracePrimaryRaysEmbree(state, *field, 600); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
 #endif
