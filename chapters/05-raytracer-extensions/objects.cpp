@@ -32,6 +32,21 @@ Hit Solid::Intersect(const Ray& ray, double t_min, double t_max) const {
   return {};
 }
 
+namespace {
+
+// The quadratic formula of Listing 2-5: t1 >= t2, or (inf, inf) without real roots.
+std::pair<double, double> QuadraticRoots(double a, double b, double c) {
+  const double discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) {
+    return {cgfs::kInf, cgfs::kInf};
+  }
+  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
+  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
+  return {t1, t2};
+}
+
+}  // namespace
+
 // Listing 2-5, "Ray Meets Sphere": put the ray P = O + tD into the sphere equation
 // <P-C, P-C> = r^2 and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
 std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere) {
@@ -41,14 +56,7 @@ std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const
   const double a = glm::dot(D, D);
   const double b = 2 * glm::dot(CO, D);
   const double c = glm::dot(CO, CO) - r * r;
-
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) {
-    return {cgfs::kInf, cgfs::kInf};
-  }
-  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
-  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
-  return {t1, t2};
+  return QuadraticRoots(a, b, c);
 }
 
 // "Caching Invariants": <D,D> comes with the ray, r² and the camera's <CO,CO> with
@@ -60,21 +68,17 @@ std::pair<double, double> IntersectRaySphere(const Ray& ray, const Sphere& spher
   const double b = 2 * glm::dot(CO, ray.D);
   const double CO_dot_CO = ray.from_camera ? sphere.camera_CO_dot_CO : glm::dot(CO, CO);
   const double c = CO_dot_CO - sphere.radius_squared;
+  return QuadraticRoots(a, b, c);
+}
 
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) {
-    return {cgfs::kInf, cgfs::kInf};
-  }
-  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
-  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
-  return {t1, t2};
+std::pair<double, double> Sphere::Roots(const Ray& ray) const {
+  return ray.use_cache ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
 }
 
 // The nearest of the two roots inside [t_min, t_max], tested in the order chapter 4's
 // ClosestIntersection tests them.
 Hit Sphere::Intersect(const Ray& ray, double t_min, double t_max) const {
-  const auto [t1, t2] =
-      ray.use_cache ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
+  const auto [t1, t2] = Roots(ray);
   Hit hit;
   if (t_min <= t1 && t1 <= t_max && t1 < hit.t) {
     hit = {t1, this};
@@ -87,8 +91,7 @@ Hit Sphere::Intersect(const Ray& ray, double t_min, double t_max) const {
 
 // "Constructive Solid Geometry": the ray is inside the sphere between its two roots.
 void Sphere::Spans(const Ray& ray, std::vector<Span>& spans) const {
-  const auto [t1, t2] =
-      ray.use_cache ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
+  const auto [t1, t2] = Roots(ray);
   if (t1 < cgfs::kInf) {
     spans.push_back({{t2, this}, {t1, this}});
   }

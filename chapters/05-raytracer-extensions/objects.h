@@ -108,6 +108,9 @@ class Sphere final : public Solid {
   Box Bounds() const override;
   void Prepare(const Vec3& camera_position) override;
 
+  // Both roots of the ray's quadratic, with the cached values if the ray may use them.
+  std::pair<double, double> Roots(const Ray& ray) const;
+
   Vec3 center{0, 0, 0};
   double radius = 1;
   // "Caching Invariants": r², and <CO,CO> for rays from the camera.

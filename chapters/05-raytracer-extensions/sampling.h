@@ -12,7 +12,8 @@
 void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas);
 
 // "Supersampling": n x n rays per pixel on a regular grid centred on the pixel's own
-// ray, each colour clamped to 0..255 and then averaged. n = 1 is RenderScene.
+// ray, each colour clamped to 0..255 and then averaged, drawn with the chosen
+// optimisations (subsampling aside). n = 1 is RenderScene.
 void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas);
 
 // The adaptive variant: one ray per pixel, then 4 x 4 rays only for the pixels

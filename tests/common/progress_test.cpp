@@ -7,9 +7,3 @@ TEST_CASE("ProgressDisplay::Line: percentage and seconds, or seconds alone", "[p
   CHECK(cgfs::ProgressDisplay::Line("fig-5-1", 0.375, 2.25) == "rendering fig-5-1   38%  2.2 s");
   CHECK(cgfs::ProgressDisplay::Line("fig-5-1", -1, 1.5) == "rendering fig-5-1  1.5 s");
 }
-
-TEST_CASE("ProgressDisplay: disabled, it starts no thread and returns at once", "[progress]") {
-  const cgfs::ProgressDisplay quiet("figure", false);
-  cgfs::ReportProgress(0.5);
-  SUCCEED();
-}
