@@ -1,6 +1,6 @@
 // Models, instances, transforms and the camera (Listings 10-1 to 10-5), the
-// matrices checked by what they do to vectors. Chapter 11 keeps them and runs
-// these tests too.
+// matrices checked by what they do to vectors. Chapters 11 and 12 keep them and
+// run these tests too.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -121,16 +121,4 @@ TEST_CASE("ApplyTransform scales, then rotates, then translates", "[transform]")
     CheckNear(cgfs::ToCartesian(MakeTransformMatrix(transform) * glm::dvec4(V, 1.0)),
               ApplyTransform(V, transform));
   }
-}
-
-TEST_CASE("RenderInstance and RenderScene agree when the camera is at the origin", "[render]") {
-  // Listing 10-3 (ApplyTransform per vertex) and Listing 10-5 (one matrix per instance).
-  const Scene scene = SceneTwoCubes();
-  Canvas by_instance(600, 600);
-  for (const Instance& I : scene.instances) {
-    RenderInstance(I, by_instance, scene.viewport);
-  }
-  Canvas by_matrix(600, 600);
-  RenderScene(scene, by_matrix);
-  CHECK(by_instance.GetImage() == by_matrix.GetImage());
 }

@@ -1,0 +1,39 @@
+// The models and scenes of the chapter's figures, and the figures themselves.
+#pragma once
+
+#include <vector>
+
+#include "cgfs/figure.h"
+#include "clipping.h"
+
+inline constexpr char kChapterDescription[] =
+    "Chapter 12, Hidden Surface Removal: solid triangles, the painter's algorithm, the depth "
+    "buffer, back-face culling.";
+
+// The cube of "Representing a Cube": edge 2, centred on the origin, each face two
+// triangles of one colour, wound so that (V1 - V0) x (V2 - V0) points outwards.
+const Model& CubeModel();
+
+// The cube without its blue face (z = -1): an open box, whose inside can be seen.
+const Model& OpenBoxModel();
+
+// The scenes of Figures 10-3 and 10-10.
+Scene SceneTwoCubes();
+Scene SceneTransformedCubes();
+
+// Four squares one behind the other, listed nearest first.
+Scene SceneOverlappingSquares();
+// Figure 12-2: three long triangles, each lying over the next one and under the
+// previous one. No order of the three draws them correctly.
+Scene SceneCyclicOverlap();
+// Two triangles that pass through each other: each is in front on one side of the
+// line where they cross.
+Scene SceneIntersectingTriangles();
+// A long floor and a ramp rising out of it at a shallow angle, both stretching far
+// away: where they cross shows whether depths are interpolated correctly.
+Scene SceneCrossingPlanes();
+// The open box, its opening towards the camera, seen from above.
+Scene SceneOpenBox();
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();

@@ -1,0 +1,17 @@
+// Listings 10-3 and 10-5 draw the same wireframes. Chapter 11 keeps them and runs
+// this test too; chapter 12 draws filled triangles and tests that with its own.
+#include <catch2/catch.hpp>
+
+#include "scenes.h"
+
+TEST_CASE("RenderInstance and RenderScene agree when the camera is at the origin", "[render]") {
+  // Listing 10-3 (ApplyTransform per vertex) and Listing 10-5 (one matrix per instance).
+  const Scene scene = SceneTwoCubes();
+  Canvas by_instance(600, 600);
+  for (const Instance& I : scene.instances) {
+    RenderInstance(I, by_instance, scene.viewport);
+  }
+  Canvas by_matrix(600, 600);
+  RenderScene(scene, by_matrix);
+  CHECK(by_instance.GetImage() == by_matrix.GetImage());
+}

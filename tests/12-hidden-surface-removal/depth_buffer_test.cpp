@@ -1,0 +1,172 @@
+// "Depth Buffering" and "Using 1/Z Instead of Z": the buffer's initial value and
+// comparison, the 1/z worked example, and depth-tested triangles.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "scenes.h"
+
+using Catch::Detail::Approx;
+using cgfs::Rgb8;
+
+namespace {
+
+constexpr Rgb8 kSquareRed8{255, 0, 0};
+constexpr Rgb8 kSquareBlue8{0, 0, 255};
+constexpr Rgb8 kNoSquare8{255, 255, 255};
+
+// A square facing the camera, 2 wide, centred on (x, y, z), as two triangles.
+void AddSquare(Model& model, double x, double y, double z, const Color& color) {
+  const int first = static_cast<int>(model.vertices.size());
+  model.vertices.insert(
+      model.vertices.end(),
+      {{x - 1, y + 1, z}, {x + 1, y + 1, z}, {x + 1, y - 1, z}, {x - 1, y - 1, z}});
+  model.triangles.push_back({{first, first + 1, first + 2}, color});
+  model.triangles.push_back({{first, first + 2, first + 3}, color});
+}
+
+}  // namespace
+
+TEST_CASE("DepthBuffer with 1/z starts at 0 and keeps what is strictly closer", "[depth]") {
+  const Canvas canvas(600, 600);
+  DepthBuffer buffer(canvas, DepthValue::kInverseZ);
+  CHECK(buffer.At(10, 20) == 0);  // 1/infinity: any point in front of the camera is closer
+  CHECK(buffer.DepthOf(4) == 0.25);
+  CHECK(buffer.TestAndSet(10, 20, buffer.DepthOf(10)));
+  CHECK(buffer.At(10, 20) == 0.1);
+  CHECK_FALSE(buffer.TestAndSet(10, 20, buffer.DepthOf(20)));  // farther
+  CHECK_FALSE(buffer.TestAndSet(10, 20, buffer.DepthOf(10)));  // as far: strictly closer only
+  CHECK(buffer.At(10, 20) == 0.1);
+  CHECK(buffer.TestAndSet(10, 20, buffer.DepthOf(5)));  // closer
+  CHECK(buffer.At(10, 20) == 0.2);
+  CHECK(buffer.At(11, 20) == 0);  // its neighbours are untouched
+  CHECK(buffer.At(10, 21) == 0);
+}
+
+TEST_CASE("DepthBuffer with z starts at +infinity and keeps what is strictly closer", "[depth]") {
+  const Canvas canvas(600, 600);
+  DepthBuffer buffer(canvas, DepthValue::kZ);
+  CHECK(buffer.At(-5, -7) == std::numeric_limits<double>::infinity());
+  CHECK(buffer.DepthOf(4) == 4);
+  CHECK(buffer.TestAndSet(-5, -7, 10));
+  CHECK_FALSE(buffer.TestAndSet(-5, -7, 20));
+  CHECK_FALSE(buffer.TestAndSet(-5, -7, 10));
+  CHECK(buffer.TestAndSet(-5, -7, 5));
+  CHECK(buffer.At(-5, -7) == 5);
+}
+
+TEST_CASE("DepthBuffer maps pixels as PutPixel does and ignores pixels off the canvas", "[depth]") {
+  const Canvas canvas(600, 400);
+  DepthBuffer buffer(canvas, DepthValue::kInverseZ);
+  // The four corners of the canvas are four different cells.
+  CHECK(buffer.TestAndSet(-300, -200, 0.1));
+  CHECK(buffer.TestAndSet(299, -200, 0.2));
+  CHECK(buffer.TestAndSet(-300, 199, 0.3));
+  CHECK(buffer.TestAndSet(299, 199, 0.4));
+  CHECK(buffer.At(-300, -200) == 0.1);
+  CHECK(buffer.At(299, -200) == 0.2);
+  CHECK(buffer.At(-300, 199) == 0.3);
+  CHECK(buffer.At(299, 199) == 0.4);
+  // Just off the canvas on every side: nothing to test, nothing to draw.
+  CHECK_FALSE(buffer.TestAndSet(300, 0, 1));
+  CHECK_FALSE(buffer.TestAndSet(-301, 0, 1));
+  CHECK_FALSE(buffer.TestAndSet(0, 200, 1));
+  CHECK_FALSE(buffer.TestAndSet(0, -201, 1));
+}
+
+TEST_CASE("EdgeInterpolate: the long side and the two short sides joined", "[depth]") {
+  const auto [v02, v012] = EdgeInterpolate(0, 0, 2, 2, 4, 0);
+  CHECK(v02 == std::vector<double>{0, 0, 0, 0, 0});
+  CHECK(v012 == std::vector<double>{0, 1, 2, 1, 0});  // the value at y1 once
+  // A flat top: y1 == y2.
+  const auto [w02, w012] = EdgeInterpolate(0, 1, 2, 3, 2, 5);
+  CHECK(w02 == std::vector<double>{1, 3, 5});
+  CHECK(w012 == std::vector<double>{1, 2, 3});
+}
+
+TEST_CASE("z is not linear on the canvas, 1/z is: the book's worked example", "[depth]") {
+  // A = (-1, 0, 2), B = (1, 0, 10), their midpoint M = (0, 0, 6), d = 1.
+  const Canvas canvas(600, 600);
+  const Viewport viewport;
+  const Point A = ProjectVertex({-1, 0, 2}, canvas, viewport);
+  const Point B = ProjectVertex({1, 0, 10}, canvas, viewport);
+  const Point M = ProjectVertex({0, 0, 6}, canvas, viewport);
+  // A'x = -0.5, B'x = 0.1, M'x = 0 on the viewport, 600 pixels wide.
+  CHECK(A.x == -300);
+  CHECK(B.x == 60);
+  CHECK(M.x == 0);
+  // z interpolated linearly from A' to B' is wrong at M': 8.6667 instead of 6.
+  const std::vector<double> z = Interpolate(A.x, 2, B.x, 10);
+  CHECK(z[M.x - A.x] == Approx(8.666667));
+  // 1/z interpolated linearly is right: 0.166667, and 1/0.166667 = 6.
+  const std::vector<double> inv_z = Interpolate(A.x, 1.0 / 2, B.x, 1.0 / 10);
+  CHECK(inv_z[M.x - A.x] == Approx(0.166667));
+  CHECK(1 / inv_z[M.x - A.x] == Approx(6));
+}
+
+TEST_CASE("inside a triangle the 1/z buffer holds the plane's 1/z, the z buffer does not",
+          "[depth]") {
+  // A triangle of the plane z = 4 + 3x, from z = 1 to z = 10: what each buffer holds
+  // at a pixel, against the true depth of the point that pixel shows.
+  const Vec3 V0(-1, -2, 1), V1(2, 0, 10), V2(-1, 2, 1);
+  const auto true_z = [](int x) {
+    // The ray through canvas column x (viewport x' = x/600, d = 1) meets z = 4 + 3x at
+    // z = 4 / (1 - 3x').
+    return 4 / (1 - 3 * (x / 600.0));
+  };
+  for (const DepthValue value : {DepthValue::kInverseZ, DepthValue::kZ}) {
+    Canvas canvas(600, 600);
+    DepthBuffer buffer(canvas, value);
+    const Viewport viewport;
+    DrawFilledTriangle(ProjectVertex(V0, canvas, viewport), ProjectVertex(V1, canvas, viewport),
+                       ProjectVertex(V2, canvas, viewport), V0.z, V1.z, V2.z, cgfs::kRed, canvas,
+                       buffer);
+    double worst = 0;
+    for (int x = -290; x <= 90; x += 20) {
+      const double stored = buffer.At(x, 0);
+      const double z = value == DepthValue::kZ ? stored : 1 / stored;
+      worst = std::max(worst, std::abs(z - true_z(x)) / true_z(x));
+    }
+    if (value == DepthValue::kInverseZ) {
+      CHECK(worst < 0.01);  // only the rounding of the vertices to whole pixels
+    } else {
+      CHECK(worst > 0.5);  // far off in the middle of the triangle
+    }
+  }
+}
+
+TEST_CASE("a depth-tested triangle on an empty buffer covers what DrawFilledTriangle covers",
+          "[depth]") {
+  Canvas plain(600, 600);
+  DrawFilledTriangle({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}, cgfs::kGreen, plain);
+  Canvas tested(600, 600);
+  DepthBuffer buffer(tested, DepthValue::kInverseZ);
+  DrawFilledTriangle({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}, 3, 7, 5, cgfs::kGreen, tested,
+                     buffer);
+  CHECK(tested.GetImage() == plain.GetImage());
+}
+
+TEST_CASE("two overlapping squares drawn in either order: the nearer one shows", "[depth]") {
+  // A red square at z = 5 (pixels -120..120) and a blue one at z = 10 (30..150).
+  for (const bool red_first : {true, false}) {
+    Model squares;
+    squares.closed = false;
+    if (red_first) {
+      AddSquare(squares, 0, 0, 5, cgfs::kRed);
+      AddSquare(squares, 1.5, 1.5, 10, cgfs::kBlue);
+    } else {
+      AddSquare(squares, 1.5, 1.5, 10, cgfs::kBlue);
+      AddSquare(squares, 0, 0, 5, cgfs::kRed);
+    }
+    Scene scene;
+    scene.instances = {{&squares, {}}};
+    Canvas canvas(600, 600);
+    RenderScene(scene, canvas);
+    INFO((red_first ? "red first" : "blue first"));
+    CHECK(canvas.GetPixel(80, 80) == kSquareRed8);     // both squares: the red, nearer one
+    CHECK(canvas.GetPixel(-40, -40) == kSquareRed8);   // the red one only
+    CHECK(canvas.GetPixel(135, 135) == kSquareBlue8);  // the blue one only
+    CHECK(canvas.GetPixel(-150, 150) == kNoSquare8);   // neither
+  }
+}
