@@ -146,17 +146,22 @@ function(cgfs_add_render_target)
   else()
     set(out "${PROJECT_SOURCE_DIR}/out")
   endif()
-  set(render_commands "")
+  # One target per chapter, render-NN-name, so that a chapter renders as soon as its
+  # program is linked, while the others still compile; `render` is all of them, and
+  # cgfs-compare, which the same clean build then makes alongside.
+  add_custom_target(render)
+  add_dependencies(render cgfs-compare)
   set(golden_commands "")
   foreach(program IN LISTS programs)
-    list(APPEND render_commands COMMAND ${program} --output "${out}/${program}")
+    add_custom_target(render-${program}
+      COMMAND ${program} --output "${out}/${program}"
+      WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
+      COMMENT "Rendering ${program}'s figures into ${out}/${program}/"
+      VERBATIM)
+    add_dependencies(render render-${program})
     list(APPEND golden_commands
       COMMAND ${program} --output "${PROJECT_SOURCE_DIR}/tests/golden/${program}")
   endforeach()
-  add_custom_target(render ${render_commands}
-    WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
-    COMMENT "Rendering every chapter's figures into ${out}/"
-    VERBATIM USES_TERMINAL)
   if(NOT CGFS_STUDENT_DIR)
     add_custom_target(update-golden ${golden_commands}
       WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
