@@ -81,6 +81,21 @@ function(cgfs_add_not_written_yet target)
   target_link_libraries(${target} PRIVATE cgfs::common)
 endfunction()
 
+# Makes TARGET use the headers precompiled once for every chapter of ours.
+function(cgfs_reuse_chapter_headers target)
+  if(NOT TARGET cgfs_chapter_headers)
+    set(source "${CMAKE_BINARY_DIR}/chapter-headers.cpp")
+    file(WRITE "${source}" "// Compiles the headers precompiled for every chapter.\n")
+    add_library(cgfs_chapter_headers OBJECT "${source}")
+    target_link_libraries(cgfs_chapter_headers PRIVATE cgfs::common cgfs_warnings)
+    target_precompile_headers(cgfs_chapter_headers PRIVATE
+      <algorithm> <array> <cmath> <functional> <memory> <optional> <string> <utility>
+      <vector> <glm/glm.hpp> <glm/mat4x4.hpp> <cgfs/canvas.h> <cgfs/color.h> <cgfs/figure.h>
+      <cgfs/math.h>)
+  endif()
+  target_precompile_headers(${target} REUSE_FROM cgfs_chapter_headers)
+endfunction()
+
 function(cgfs_add_chapter chapter)
   cgfs_chapter_source_dir(${chapter} dir)
   if(NOT dir)
@@ -115,12 +130,13 @@ function(cgfs_add_chapter chapter)
   endif()
   target_link_libraries(${chapter}-lib PUBLIC cgfs::common PRIVATE cgfs_warnings)
   if(NOT CGFS_STUDENT_DIR)
-    # Ours: a chapter's files are compiled as one unit ("unity build"), so the
-    # standard and GLM headers they share are compiled once per chapter, not once per
-    # file: the clean build behind scripts/render takes a third less time. Every file
+    # Ours: a chapter's files are compiled as one unit ("unity build"), and the
+    # standard, GLM and common headers every chapter uses are precompiled once for all
+    # of them, so the clean build behind scripts/render takes half the time. Every file
     # still includes what it uses. A student's files stay separate units, where two
-    # files may each have a helper of the same name.
+    # files may each have a helper of the same name, and a missing #include shows.
     set_target_properties(${chapter}-lib PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+    cgfs_reuse_chapter_headers(${chapter}-lib)
   endif()
 
   set(main "${dir}/main.cpp")
@@ -130,6 +146,9 @@ function(cgfs_add_chapter chapter)
   add_library(${chapter}-main OBJECT "${main}")
   target_link_libraries(${chapter}-main PRIVATE ${chapter}-lib cgfs_warnings)
   target_compile_definitions(${chapter}-main PRIVATE CGFS_CHAPTER="${chapter}")
+  if(NOT CGFS_STUDENT_DIR)
+    cgfs_reuse_chapter_headers(${chapter}-main)
+  endif()
   add_executable(${chapter} $<TARGET_OBJECTS:${chapter}-main>)
   target_link_libraries(${chapter} PRIVATE ${chapter}-lib)
   cgfs_add_not_written_yet(${chapter} ${chapter}-lib ${chapter}-main)
