@@ -6,27 +6,19 @@
 
 #include "golden.h"
 #include "painters_algorithm.h"
+#include "pixels.h"
 #include "printing.h"
 #include "scenes.h"
 
 using Catch::Detail::Approx;
 using cgfs::Rgb8;
+using cgfs::test::ChangedPixels;
 using cgfs::test::RenderFigureNamed;
 
 namespace {
 
 SceneTriangle At(double z0, double z1, double z2, const Color& color) {
   return {{Vec3(0, 0, z0), Vec3(1, 0, z1), Vec3(0, 1, z2)}, color};
-}
-
-int PixelsThatDiffer(const Canvas& a, const Canvas& b) {
-  int count = 0;
-  for (int y = -a.Height() / 2; y < a.Height() / 2; ++y) {
-    for (int x = -a.Width() / 2; x < a.Width() / 2; ++x) {
-      count += a.GetPixel(x, y) != b.GetPixel(x, y);
-    }
-  }
-  return count;
 }
 
 }  // namespace
@@ -81,14 +73,14 @@ TEST_CASE("the painter draws squares at different depths as the depth buffer doe
   CHECK(painter.GetImage() == depth.GetImage());
   // In model order the far squares paint over the near ones.
   const Canvas model_order = RenderFigureNamed(Figures(), "overlapping-squares-model-order");
-  CHECK(PixelsThatDiffer(model_order, painter) > 1000);
+  CHECK(ChangedPixels(model_order, painter).size() > 1000);
 }
 
 TEST_CASE("Figure 12-2's cycle: the painter gets one crossing wrong, the depth buffer none",
           "[painter]") {
   const Canvas painter = RenderFigureNamed(Figures(), "cyclic-overlap-painters");
   const Canvas depth = RenderFigureNamed(Figures(), "cyclic-overlap-depth-buffer");
-  CHECK(PixelsThatDiffer(painter, depth) > 0);
+  CHECK(!ChangedPixels(painter, depth).empty());
   // Near the top, the red triangle's wide end crosses the blue one's tip.
   CHECK(depth.GetPixel(-3, 124) == Rgb8{255, 0, 0});
   CHECK(painter.GetPixel(-3, 124) == Rgb8{0, 0, 255});
@@ -98,7 +90,7 @@ TEST_CASE("triangles passing through each other: the painter draws one over the 
           "[painter]") {
   const Canvas painter = RenderFigureNamed(Figures(), "intersecting-painters");
   const Canvas depth = RenderFigureNamed(Figures(), "intersecting-depth-buffer");
-  CHECK(PixelsThatDiffer(painter, depth) > 0);
+  CHECK(!ChangedPixels(painter, depth).empty());
   // Left of where they cross the blue triangle is in front, right of it the red one.
   CHECK(depth.GetPixel(-49, 15) == Rgb8{0, 0, 255});
   CHECK(depth.GetPixel(60, -20) == Rgb8{255, 0, 0});

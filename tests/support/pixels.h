@@ -23,6 +23,19 @@ inline std::set<std::pair<int, int>> DrawnPixels(const Canvas& canvas) {
   return drawn;
 }
 
+// The canvas coordinates (x, y) of every pixel where two canvases of one size differ.
+inline std::set<std::pair<int, int>> ChangedPixels(const Canvas& a, const Canvas& b) {
+  std::set<std::pair<int, int>> changed;
+  for (int x = -a.Width() / 2; x < a.Width() / 2; ++x) {
+    for (int y = -a.Height() / 2; y < a.Height() / 2; ++y) {
+      if (a.GetPixel(x, y) != b.GetPixel(x, y)) {
+        changed.insert({x, y});
+      }
+    }
+  }
+  return changed;
+}
+
 // Row y of a pixel set: its first and last x, and how many pixels it has.
 inline std::tuple<int, int, int> Row(const std::set<std::pair<int, int>>& pixels, int y) {
   int first = 1 << 30;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "benchmark_main.h"
 #include "scenes.h"
 
 namespace {
@@ -45,6 +46,8 @@ void Render(benchmark::State& state, const Scene& scene, const HiddenSurfaceRemo
   }
 }
 
+}  // namespace
+
 void RegisterAll() {
   for (const auto& [name, method] : Methods()) {
     benchmark::RegisterBenchmark(("Cubes/" + name).c_str(), Render, SceneTransformedCubes(), method)
@@ -57,17 +60,4 @@ void RegisterAll() {
           ->Unit(benchmark::kMillisecond);
     }
   }
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  RegisterAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-    return 1;
-  }
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
 }

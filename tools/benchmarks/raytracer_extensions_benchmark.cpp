@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "benchmark_main.h"
 #include "raytracer.h"
 #include "scenes.h"
 
@@ -131,6 +132,8 @@ void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int sid
 }
 #endif
 
+}  // namespace
+
 void RegisterAll() {
   const auto camera = std::make_shared<Scene>(SceneCamera());
   for (const Switches& each : EachSwitch()) {
@@ -185,17 +188,4 @@ void RegisterAll() {
                "benchmark-05: built without Embree (Debian libembree-dev), so the "
                "SphereFieldPrimary/*/embree benchmarks are skipped\n");
 #endif
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  RegisterAll();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-    return 1;
-  }
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
 }
