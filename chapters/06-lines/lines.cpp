@@ -1,5 +1,6 @@
 #include "lines.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <utility>
 
@@ -11,6 +12,7 @@ std::vector<double> Interpolate(int i0, double d0, int i1, double d1) {
     return {d0};
   }
   std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(std::max(0, i1 - i0 + 1)));  // one allocation
   const double a = (d1 - d0) / (i1 - i0);
   for (int i = i0; i <= i1; ++i) {
     values.push_back(d0 + a * (i - i0));

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "golden.h"
+#include "painters_algorithm.h"
 #include "pixels.h"
 #include "printing.h"
 #include "scenes.h"
@@ -24,6 +25,20 @@ bool OnAnEdge(const Canvas& canvas, int x, int y) {
     }
   }
   return false;
+}
+
+constexpr Rgb8 kSquareRed8{255, 0, 0};
+constexpr Rgb8 kSquareBlue8{0, 0, 255};
+constexpr Rgb8 kNoSquare8{255, 255, 255};
+
+// A square facing the camera, 2 wide, centred on (x, y, z), as two triangles.
+void AddSquare(Model& model, double x, double y, double z, const Color& color) {
+  const int first = static_cast<int>(model.vertices.size());
+  model.vertices.insert(
+      model.vertices.end(),
+      {{x - 1, y + 1, z}, {x + 1, y + 1, z}, {x + 1, y - 1, z}, {x - 1, y - 1, z}});
+  model.triangles.push_back({{first, first + 1, first + 2}, color});
+  model.triangles.push_back({{first, first + 2, first + 3}, color});
 }
 
 }  // namespace
@@ -94,6 +109,69 @@ TEST_CASE("an open box is not culled; culled as if closed, its inside is gone", 
   CHECK(open.GetPixel(30, -80) == Rgb8{0, 255, 0});  // the inside of a side face
   CHECK(culled.GetPixel(0, -100) == kBackground8);
   CHECK(culled.GetPixel(30, -80) == kBackground8);
+}
+
+TEST_CASE("two overlapping squares drawn in either order: the nearer one shows", "[depth]") {
+  // A red square at z = 5 (pixels -120..120) and a blue one at z = 10 (30..150).
+  for (const bool red_first : {true, false}) {
+    Model squares;
+    squares.closed = false;
+    if (red_first) {
+      AddSquare(squares, 0, 0, 5, cgfs::kRed);
+      AddSquare(squares, 1.5, 1.5, 10, cgfs::kBlue);
+    } else {
+      AddSquare(squares, 1.5, 1.5, 10, cgfs::kBlue);
+      AddSquare(squares, 0, 0, 5, cgfs::kRed);
+    }
+    Scene scene;
+    scene.instances = {{&squares, {}}};
+    Canvas canvas(600, 600);
+    RenderScene(scene, canvas);
+    INFO((red_first ? "red first" : "blue first"));
+    CHECK(canvas.GetPixel(80, 80) == kSquareRed8);     // both squares: the red, nearer one
+    CHECK(canvas.GetPixel(-40, -40) == kSquareRed8);   // the red one only
+    CHECK(canvas.GetPixel(135, 135) == kSquareBlue8);  // the blue one only
+    CHECK(canvas.GetPixel(-150, 150) == kNoSquare8);   // neither
+  }
+}
+
+TEST_CASE("the painter draws squares at different depths as the depth buffer does", "[painter]") {
+  const Canvas painter = RenderFigureNamed(Figures(), "painters-algorithm");
+  Canvas depth(600, 600);
+  RenderScene(SceneOverlappingSquares(), depth, {.cull_back_faces = false});
+  CHECK(painter.GetImage() == depth.GetImage());
+  // In model order the far squares paint over the near ones.
+  const Canvas model_order = RenderFigureNamed(Figures(), "overlapping-squares-model-order");
+  CHECK(ChangedPixels(model_order, painter).size() > 1000);
+}
+
+TEST_CASE("Figure 12-2's cycle: the painter gets one crossing wrong, the depth buffer none",
+          "[painter]") {
+  const Canvas painter = RenderFigureNamed(Figures(), "cyclic-overlap-painters");
+  const Canvas depth = RenderFigureNamed(Figures(), "cyclic-overlap-depth-buffer");
+  CHECK(!ChangedPixels(painter, depth).empty());
+  // Near the top, the red triangle's wide end crosses the blue one's tip.
+  CHECK(depth.GetPixel(-3, 124) == Rgb8{255, 0, 0});
+  CHECK(painter.GetPixel(-3, 124) == Rgb8{0, 0, 255});
+}
+
+TEST_CASE("triangles passing through each other: the painter draws one over the other",
+          "[painter]") {
+  const Canvas painter = RenderFigureNamed(Figures(), "intersecting-painters");
+  const Canvas depth = RenderFigureNamed(Figures(), "intersecting-depth-buffer");
+  CHECK(!ChangedPixels(painter, depth).empty());
+  // Left of where they cross the blue triangle is in front, right of it the red one.
+  CHECK(depth.GetPixel(-49, 15) == Rgb8{0, 0, 255});
+  CHECK(depth.GetPixel(60, -20) == Rgb8{255, 0, 0});
+  CHECK(painter.GetPixel(-49, 15) == Rgb8{255, 0, 0});
+  CHECK(painter.GetPixel(60, -20) == Rgb8{255, 0, 0});
+}
+
+TEST_CASE("on Figure 10-10's cubes the centroid puts a hidden bottom over a side", "[painter]") {
+  const Canvas painter = RenderFigureNamed(Figures(), "painters-algorithm-cubes");
+  const Canvas depth = RenderFigureNamed(Figures(), "fig-12-4-depth-buffer");
+  CHECK(depth.GetPixel(-230, -215) == Rgb8{255, 255, 0});    // instance A's left face
+  CHECK(painter.GetPixel(-230, -215) == Rgb8{0, 255, 255});  // its bottom, over it
 }
 
 TEST_CASE("every figure matches its golden image", "[golden]") {

@@ -1,0 +1,207 @@
+#include "scenes.h"
+
+#include <string>
+
+#include "sphere_model.h"
+
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
+// each face's two triangles have its normal at every corner.
+const Model& CubeModel() {
+  const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
+  static const Model cube{
+      {
+          {1, 1, 1},
+          {-1, 1, 1},
+          {-1, -1, 1},
+          {1, -1, 1},
+          {1, 1, -1},
+          {-1, 1, -1},
+          {-1, -1, -1},
+          {1, -1, -1},
+      },
+      {
+          {{0, 1, 2}, cgfs::kRed, face({0, 0, 1})},
+          {{0, 2, 3}, cgfs::kRed, face({0, 0, 1})},  // z = +1
+          {{4, 0, 3}, cgfs::kGreen, face({1, 0, 0})},
+          {{4, 3, 7}, cgfs::kGreen, face({1, 0, 0})},  // x = +1
+          {{5, 4, 7}, cgfs::kBlue, face({0, 0, -1})},
+          {{5, 7, 6}, cgfs::kBlue, face({0, 0, -1})},  // z = -1
+          {{1, 5, 6}, cgfs::kYellow, face({-1, 0, 0})},
+          {{1, 6, 2}, cgfs::kYellow, face({-1, 0, 0})},  // x = -1
+          {{4, 5, 1}, cgfs::kPurple, face({0, 1, 0})},
+          {{4, 1, 0}, cgfs::kPurple, face({0, 1, 0})},  // y = +1
+          {{2, 6, 7}, cgfs::kCyan, face({0, -1, 0})},
+          {{2, 7, 3}, cgfs::kCyan, face({0, -1, 0})},  // y = -1
+      },
+  };
+  return cube;
+}
+
+// Figure 10-3: two instances of the cube, the camera at the origin.
+Scene SceneTwoCubes() {
+  Scene scene;
+  scene.instances = {
+      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
+  };
+  return scene;
+}
+
+// Figure 10-10: the instances scaled and rotated, seen from a camera moved back
+// and to the left and turned 30 degrees to the right. Also the scene of
+// chapters 11 to 14.
+Scene SceneTransformedCubes() {
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+  };
+  return scene;
+}
+
+// The lights of Figures 13-1 to 13-9, in world space.
+std::vector<Light> ShadingLights() {
+  return {
+      {LightType::kAmbient, 0.2},
+      {LightType::kDirectional, 0.2, {}, {-1, 0, 1}},
+      {LightType::kPoint, 0.6, {-3, 2, -10}},
+  };
+}
+
+// Figure 10-10's scene and a green sphere of 15 divisions, scale 1.5, lower right.
+Scene SceneShading() {
+  static const Model sphere = GenerateSphere(15, cgfs::kGreen);
+  Scene scene = SceneTransformedCubes();
+  scene.instances.push_back({&sphere, {1.5, glm::dmat4(1.0), {1.75, -0.5, 7}}});
+  scene.lights = ShadingLights();
+  return scene;
+}
+
+// The cube's green face alone (triangles 4, 0, 3 and 4, 3, 7; an open model), turned
+// 30 degrees towards the camera at (-2, 0, 5); a point light 0.6 at (2.25, 0, 5),
+// marked by a small yellow sphere; ambient 0.2.
+Scene SceneCloseLight() {
+  static const Model face = [] {
+    Model model;
+    model.vertices = CubeModel().vertices;
+    model.triangles = {CubeModel().triangles[2], CubeModel().triangles[3]};
+    model.closed = false;
+    return model;
+  }();
+  static const Model marker = GenerateSphere(15, cgfs::kYellow);
+  const Vec3 light_position(2.25, 0, 5);
+  Scene scene;
+  scene.instances = {
+      {&face, {1, MakeOYRotationMatrix(-30), {-2, 0, 5}}},
+      {&marker, {0.1, glm::dmat4(1.0), light_position}},
+  };
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kPoint, 0.6, light_position}};
+  return scene;
+}
+
+// Chapter 4's spheres (red, blue, green; the yellow ground sphere of radius 5000
+// becomes a floor at y = -1) and chapter 3's lights, with the camera at the origin.
+Scene SceneRaytracerSpheres() {
+  static const Model red = [] {
+    Model model = GenerateSphere(15, cgfs::kRed);
+    model.specular = 500;
+    return model;
+  }();
+  static const Model blue = [] {
+    Model model = GenerateSphere(15, cgfs::kBlue);
+    model.specular = 500;
+    return model;
+  }();
+  static const Model green = [] {
+    Model model = GenerateSphere(15, cgfs::kGreen);
+    model.specular = 10;
+    return model;
+  }();
+  // A square 100 units wide at y = 0, wound to face up; clipping cuts away what is
+  // behind the camera or outside the view.
+  static const Model floor{
+      {{-50, 0, -50}, {-50, 0, 50}, {50, 0, 50}, {50, 0, -50}},
+      {{{0, 1, 2}, cgfs::kYellow, {Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(0, 1, 0)}},
+       {{0, 2, 3}, cgfs::kYellow, {Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(0, 1, 0)}}},
+      false,
+  };
+  Scene scene;
+  scene.instances = {
+      {&red, {1, glm::dmat4(1.0), {0, -1, 3}}},
+      {&blue, {1, glm::dmat4(1.0), {2, 0, 4}}},
+      {&green, {1, glm::dmat4(1.0), {-2, 0, 4}}},
+      {&floor, {1, glm::dmat4(1.0), {0, -1, 0}}},
+  };
+  scene.lights = {
+      {LightType::kAmbient, 0.2},
+      {LightType::kPoint, 0.6, {2, 1, 0}},
+      {LightType::kDirectional, 0.2, {}, {1, 4, 4}},
+  };
+  return scene;
+}
+
+namespace {
+
+// The systematic name of a shading: e.g. "phong-model-normals-diffuse-specular".
+std::string NameOf(const Shading& shading) {
+  const char* model = shading.model == ShadingModel::kFlat      ? "flat"
+                      : shading.model == ShadingModel::kGouraud ? "gouraud"
+                                                                : "phong";
+  const char* normals =
+      shading.normals == NormalSource::kTriangle ? "triangle-normals" : "model-normals";
+  const char* terms = !shading.terms.specular  ? "diffuse"
+                      : !shading.terms.diffuse ? "specular"
+                                               : "diffuse-specular";
+  return std::string(model) + "-" + normals + "-" + terms;
+}
+
+// The book's figures of the base scene, by the shading they use.
+std::string BookFigureNumber(const Shading& shading) {
+  if (!shading.terms.diffuse || !shading.terms.specular) {
+    return "";
+  }
+  const bool triangle_normals = shading.normals == NormalSource::kTriangle;
+  switch (shading.model) {
+    case ShadingModel::kFlat:
+      return triangle_normals ? "fig-13-1-" : "";
+    case ShadingModel::kGouraud:
+      return triangle_normals ? "fig-13-3-" : "fig-13-6-";
+    case ShadingModel::kPhong:
+      return triangle_normals ? "" : "fig-13-9-";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<cgfs::Figure> Figures() {
+  std::vector<cgfs::Figure> figures;
+  // The base scene in every combination: shading model x normals x lighting terms.
+  for (const ShadingModel model :
+       {ShadingModel::kFlat, ShadingModel::kGouraud, ShadingModel::kPhong}) {
+    for (const NormalSource normals : {NormalSource::kTriangle, NormalSource::kModel}) {
+      for (const LightingTerms terms :
+           {LightingTerms{true, false}, LightingTerms{false, true}, LightingTerms{true, true}}) {
+        const Shading shading{model, normals, terms};
+        figures.push_back(
+            {BookFigureNumber(shading) + NameOf(shading),
+             "the cubes and the sphere, " + NameOf(shading),
+             [shading](Canvas& canvas) { RenderScene(SceneShading(), canvas, {}, shading); }});
+      }
+    }
+  }
+  figures.push_back({"fig-13-7-close-light-gouraud",
+                     "a large face lit from close by, Gouraud: the corners are dim, so all is",
+                     [](Canvas& canvas) {
+                       RenderScene(SceneCloseLight(), canvas, {},
+                                   {ShadingModel::kGouraud, NormalSource::kModel, {}});
+                     }});
+  figures.push_back({"fig-13-10-close-light-phong",
+                     "the same face, Phong: the bright spot nearest the light",
+                     [](Canvas& canvas) { RenderScene(SceneCloseLight(), canvas); }});
+  figures.push_back({"fig-13-11-raytracer-spheres",
+                     "the ray tracer's spheres and lights rasterized, Phong shading",
+                     [](Canvas& canvas) { RenderScene(SceneRaytracerSpheres(), canvas); }});
+  return figures;
+}
