@@ -24,11 +24,11 @@ void Render(benchmark::State& state, const Scene& scene, const Shading& shading)
 }  // namespace
 
 void RegisterAll() {
-  for (const auto& [name, model] : {std::pair{"flat", ShadingModel::kFlat},
-                                    std::pair{"gouraud", ShadingModel::kGouraud},
-                                    std::pair{"phong", ShadingModel::kPhong}}) {
-    benchmark::RegisterBenchmark((std::string("Shading/") + name).c_str(), Render,
-                                 SceneShading(), Shading{model, NormalSource::kModel, {}})
+  for (const auto& [name, model] :
+       {std::pair{"flat", ShadingModel::kFlat}, std::pair{"gouraud", ShadingModel::kGouraud},
+        std::pair{"phong", ShadingModel::kPhong}}) {
+    benchmark::RegisterBenchmark((std::string("Shading/") + name).c_str(), Render, SceneShading(),
+                                 Shading{model, NormalSource::kModel, {}})
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::RegisterBenchmark("RaytracerSpheres", Render, SceneRaytracerSpheres(), Shading{})
