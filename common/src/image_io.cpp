@@ -218,7 +218,9 @@ class PpmReader {
   std::size_t pos_ = 0;
 };
 
-Image DecodePng(const std::string& bytes, const fs::path& path) {
+// PNG or JPEG, which stb_image tells apart by their first bytes; `format` names it
+// in the messages.
+Image DecodeWithStb(const std::string& bytes, const fs::path& path, const std::string& format) {
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw Error(Quoted(path) + " is too large");
   }
@@ -229,15 +231,17 @@ Image DecodePng(const std::string& bytes, const fs::path& path) {
   if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                             static_cast<int>(bytes.size()), &width, &height,
                             &channels_in_file) == 0) {
-    throw Error(Quoted(path) + " is not a readable PNG image (" + stbi_failure_reason() + ")");
+    throw Error(Quoted(path) + " is not a readable " + format + " image (" + stbi_failure_reason() +
+                ")");
   }
-  CheckDeclaredSize(width, height, path, "PNG");
+  CheckDeclaredSize(width, height, path, format);
   std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                             static_cast<int>(bytes.size()), &width, &height, &channels_in_file, 3),
       stbi_image_free);
   if (!pixels) {
-    throw Error(Quoted(path) + " is not a readable PNG image (" + stbi_failure_reason() + ")");
+    throw Error(Quoted(path) + " is not a readable " + format + " image (" + stbi_failure_reason() +
+                ")");
   }
   const stbi_uc* first = pixels.get();
   const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
@@ -287,10 +291,13 @@ Image ReadImage(const fs::path& path) {
   if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '3' || bytes[1] == '6')) {
     return PpmReader(bytes, path).Read();
   }
-  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) {
-    throw Error(Quoted(path) + " is neither a PNG nor a PPM (P3 or P6) image");
+  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) {
+    return DecodeWithStb(bytes, path, "PNG");
   }
-  return DecodePng(bytes, path);
+  if (bytes.compare(0, 3, "\xff\xd8\xff") == 0) {
+    return DecodeWithStb(bytes, path, "JPEG");
+  }
+  throw Error(Quoted(path) + " is neither a PNG, a JPEG nor a PPM (P3 or P6) image");
 }
 
 }  // namespace cgfs

@@ -2,11 +2,15 @@
 // clear errors for bad files.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
+
+#include <stb_image_write.h>
 
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
@@ -83,6 +87,34 @@ TEST_CASE("16-bit binary PPM is scaled to 8 bits", "[image-io]") {
   CHECK(cgfs::ReadImage(file).At(0, 0) == Rgb8{255, 128, 0});
 }
 
+TEST_CASE("a JPEG is read as RGB", "[image-io]") {
+  // A flat orange 16x8 JPEG, written with stb's own encoder: JPEG is lossy, so the
+  // colour comes back within a few levels.
+  std::string jpeg;
+  const std::vector<std::uint8_t> orange = [] {
+    std::vector<std::uint8_t> bytes;
+    for (int i = 0; i < 16 * 8; ++i) {
+      bytes.insert(bytes.end(), {230, 120, 20});
+    }
+    return bytes;
+  }();
+  REQUIRE(stbi_write_jpg_to_func(
+              [](void* context, void* data, int size) {
+                static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                           static_cast<std::size_t>(size));
+              },
+              &jpeg, 16, 8, 3, orange.data(), 95) != 0);
+  const fs::path file = TemporaryFolder() / "orange.jpg";
+  WriteText(file, jpeg);
+  const Image image = cgfs::ReadImage(file);
+  CHECK(image.Width() == 16);
+  CHECK(image.Height() == 8);
+  const Rgb8 pixel = image.At(5, 3);
+  CHECK(std::abs(pixel.r - 230) <= 4);
+  CHECK(std::abs(pixel.g - 120) <= 4);
+  CHECK(std::abs(pixel.b - 20) <= 4);
+}
+
 TEST_CASE("writing replaces an existing file", "[image-io]") {
   const fs::path file = TemporaryFolder() / "pattern.png";
   WriteText(file, "old contents");
@@ -108,7 +140,7 @@ TEST_CASE("bad image files are refused with one-line errors", "[image-io]") {
   CHECK_THAT(message_for(folder / "empty.png"), Catch::Contains("empty"));
 
   WriteText(folder / "text.png", "this is not an image at all");
-  CHECK_THAT(message_for(folder / "text.png"), Catch::Contains("neither a PNG nor a PPM"));
+  CHECK_THAT(message_for(folder / "text.png"), Catch::Contains("neither a PNG, a JPEG nor a PPM"));
 
   WriteText(folder / "short.ppm", "P6\n4 4\n255\nabc");
   CHECK_THAT(message_for(folder / "short.ppm"), Catch::Contains("ends after 3 of 48 pixel bytes"));
@@ -138,6 +170,15 @@ TEST_CASE("bad image files are refused with one-line errors", "[image-io]") {
   std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
   WriteText(folder / "truncated.png", bytes.substr(0, bytes.size() / 2));
   CHECK_THAT(message_for(folder / "truncated.png"), Catch::Contains("not a readable PNG"));
+
+  // A JPEG that stops after its first marker, and one whose header declares a
+  // 65535x65535 image: both refused, the second before anything is decoded.
+  WriteText(folder / "truncated.jpg", std::string("\xff\xd8\xff\xe0", 4));
+  CHECK_THAT(message_for(folder / "truncated.jpg"), Catch::Contains("not a readable JPEG"));
+  WriteText(folder / "huge.jpg", std::string("\xff\xd8\xff\xc0\x00\x11\x08\xff\xff\xff\xff\x03"
+                                             "\x01\x11\x00\x02\x11\x00\x03\x11\x00",
+                                             21));
+  CHECK_THAT(message_for(folder / "huge.jpg"), Catch::Contains("65535x65535 is out of range"));
 
   for (const std::string& message :
        {message_for(folder / "text.png"), message_for(folder / "short-ascii.ppm")}) {

@@ -16,9 +16,9 @@ void WriteImage(const Image& image, const std::filesystem::path& path);
 // The bytes of a PNG, or of a binary PPM (P6) when `name` ends in .ppm.
 std::string EncodeImage(const Image& image, const std::filesystem::path& name);
 
-// Reads PNG, binary PPM (P6) or plain PPM (P3), whatever the file name says.
-// PNG alpha is dropped and grey becomes RGB; PPM samples are scaled from their
-// maximum value to 0..255. Throws cgfs::Error with a one-line reason.
+// Reads PNG, JPEG, binary PPM (P6) or plain PPM (P3), whatever the file name says.
+// Alpha is dropped and grey becomes RGB; PPM samples are scaled from their maximum
+// value to 0..255. Throws cgfs::Error with a one-line reason.
 Image ReadImage(const std::filesystem::path& path);
 
 }  // namespace cgfs
