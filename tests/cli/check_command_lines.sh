@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of the command lines: exit statuses, one-line errors, and no
 # file written on bad input. Usage:
-#   check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE [CHAPTER_5_PROGRAM]
+#   check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE [CHAPTER_5_PROGRAM [CHAPTER_14_PROGRAM]]
 set -u
-program=$1 compare=$2 chapter5=${3:-}
+program=$1 compare=$2 chapter5=${3:-} chapter14=${4:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -58,6 +58,32 @@ if [ -n "$chapter5" ]; then
   expect 2 "chapter 5: threads not a number" "$chapter5" --threads many --output "$work/bad"
   expect 2 "chapter 5: --threads 4 without threads" "$chapter5" --threads 4 \
     --optimizations cache --output "$work/bad"
+fi
+
+# Chapter 14's --texture (chapters/14-textures/options.h): any PNG, JPEG or PPM.
+if [ -n "$chapter14" ]; then
+  "$program" --output "$work/texture" --figure fig-2-11 --size 64x64 >/dev/null
+  expect 0 "chapter 14: --texture with a PNG" "$chapter14" --output "$work/ch14" \
+    --size 60x60 --figure fig-14-5-perspective-correct --texture "$work/texture/fig-2-11.png"
+  "$chapter14" --output "$work/ch14-ours" --size 60x60 --figure fig-14-5-perspective-correct \
+    >/dev/null
+  if cmp -s "$work/ch14/fig-14-5-perspective-correct.png" \
+    "$work/ch14-ours/fig-14-5-perspective-correct.png"; then
+    echo "FAIL: chapter 14: --texture changed nothing"
+    failures=$((failures + 1))
+  else
+    echo "ok: chapter 14: --texture paints the crates with the given image"
+  fi
+  printf 'not an image' >"$work/texture.png"
+  expect 2 "chapter 14: --texture that is not an image" "$chapter14" \
+    --texture "$work/texture.png" --output "$work/bad"
+  expect 2 "chapter 14: --texture that does not exist" "$chapter14" \
+    --texture "$work/missing.png" --output "$work/bad"
+  expect 2 "chapter 14: --texture that is a folder" "$chapter14" --texture "$work" \
+    --output "$work/bad"
+  "$program" --output "$work/wide" --figure fig-2-11 --size 2100x8 >/dev/null
+  expect 2 "chapter 14: --texture too large" "$chapter14" \
+    --texture "$work/wide/fig-2-11.png" --output "$work/bad"
 fi
 
 expect 2 "unknown option" "$program" --colour red --output "$work/bad"

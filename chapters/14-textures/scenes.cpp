@@ -1,0 +1,246 @@
+#include "scenes.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "cgfs/error.h"
+
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
+// each face's two triangles have its normal at every corner. Chapter 14, "Painting a
+// Crate": each face's first triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its
+// second (A, C, D) has (0, 0), (1, 1), (0, 1): the whole texture on every face.
+const Model& CubeModel() {
+  const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
+  const std::array<glm::dvec2, 3> first = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)};
+  const std::array<glm::dvec2, 3> second = {glm::dvec2(0, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)};
+  static const Model cube{
+      {
+          {1, 1, 1},
+          {-1, 1, 1},
+          {-1, -1, 1},
+          {1, -1, 1},
+          {1, 1, -1},
+          {-1, 1, -1},
+          {-1, -1, -1},
+          {1, -1, -1},
+      },
+      {
+          {{0, 1, 2}, cgfs::kRed, face({0, 0, 1}), first},
+          {{0, 2, 3}, cgfs::kRed, face({0, 0, 1}), second},  // z = +1
+          {{4, 0, 3}, cgfs::kGreen, face({1, 0, 0}), first},
+          {{4, 3, 7}, cgfs::kGreen, face({1, 0, 0}), second},  // x = +1
+          {{5, 4, 7}, cgfs::kBlue, face({0, 0, -1}), first},
+          {{5, 7, 6}, cgfs::kBlue, face({0, 0, -1}), second},  // z = -1
+          {{1, 5, 6}, cgfs::kYellow, face({-1, 0, 0}), first},
+          {{1, 6, 2}, cgfs::kYellow, face({-1, 0, 0}), second},  // x = -1
+          {{4, 5, 1}, cgfs::kPurple, face({0, 1, 0}), first},
+          {{4, 1, 0}, cgfs::kPurple, face({0, 1, 0}), second},  // y = +1
+          {{2, 6, 7}, cgfs::kCyan, face({0, -1, 0}), first},
+          {{2, 7, 3}, cgfs::kCyan, face({0, -1, 0}), second},  // y = -1
+      },
+  };
+  return cube;
+}
+
+// Figure 10-3: two instances of the cube, the camera at the origin.
+Scene SceneTwoCubes() {
+  Scene scene;
+  scene.instances = {
+      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
+  };
+  return scene;
+}
+
+// Figure 10-10: the instances scaled and rotated, seen from a camera moved back
+// and to the left and turned 30 degrees to the right. Also the scene of
+// chapters 11 to 14.
+Scene SceneTransformedCubes() {
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+  };
+  return scene;
+}
+
+// The lights of Figures 13-1 to 13-9, in world space.
+std::vector<Light> ShadingLights() {
+  return {
+      {LightType::kAmbient, 0.2},
+      {LightType::kDirectional, 0.2, {}, {-1, 0, 1}},
+      {LightType::kPoint, 0.6, {-3, 2, -10}},
+  };
+}
+
+namespace {
+
+// The texture on the crates: the project's own, or the one --texture gave.
+std::optional<MipmappedTexture>& ChosenCrateTexture() {
+  static std::optional<MipmappedTexture> texture;
+  return texture;
+}
+
+constexpr int kMaxTextureSide = 2048;
+
+}  // namespace
+
+void UseCrateTexture(Texture texture) {
+  if (texture.width > kMaxTextureSide || texture.height > kMaxTextureSide) {
+    throw cgfs::Error("a texture of " + std::to_string(texture.width) + "x" +
+                      std::to_string(texture.height) + " is too large (at most " +
+                      std::to_string(kMaxTextureSide) + " a side)");
+  }
+  ChosenCrateTexture() = BuildMipChain(std::move(texture));
+}
+
+const MipmappedTexture& CrateTexture() {
+  static const MipmappedTexture ours = BuildMipChain(MakeCrateTexture(256));
+  return ChosenCrateTexture() ? *ChosenCrateTexture() : ours;
+}
+
+// A cube model with a texture on every face.
+Model TexturedCube(const MipmappedTexture& texture) {
+  Model model = CubeModel();
+  model.texture = &texture;
+  return model;
+}
+
+// Figures 14-3 and 14-5: three crates, seen from Figure 10-10's camera, lit as in
+// chapter 13.
+Scene SceneCrates() {
+  static Model crate;
+  crate = TexturedCube(CrateTexture());
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&crate, {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&crate, {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+      {&crate, {1, MakeOYRotationMatrix(-30), {1.75, 0, 5}}},
+  };
+  scene.lights = ShadingLights();
+  return scene;
+}
+
+// Figures 14-7 and 14-8: one crate so close that each texel of a small (32x32)
+// crate texture covers many pixels (with --texture, the given texture).
+Scene SceneCrateCloseUp() {
+  // The 32x32 level of the 256x256 crate: every line of it still there, averaged.
+  static const MipmappedTexture small =
+      BuildMipChain(BuildMipChain(MakeCrateTexture(256)).levels[3]);
+  static Model crate;
+  crate = TexturedCube(ChosenCrateTexture() ? *ChosenCrateTexture() : small);
+  Scene scene;
+  scene.instances = {{&crate, {1, MakeOYRotationMatrix(-25), {0.4, 0.2, 3.2}}}};
+  scene.lights = ShadingLights();
+  return scene;
+}
+
+const MipmappedTexture& OneTexelCheckerboard() {
+  static const MipmappedTexture checkerboard =
+      BuildMipChain(MakeCheckerboard(256, 1, cgfs::kBlack, cgfs::kWhite));
+  return checkerboard;
+}
+
+// Figure 14-11: a 256x256 checkerboard of one-texel squares on a square facing the
+// camera, 128 pixels wide (two texels per pixel), and on a floor going away from it,
+// where the texels per pixel grow with the distance. Both should look grey.
+Scene SceneMinifiedCheckerboard() {
+  static const Model square = [] {
+    const std::array<Vec3, 3> toward_camera = {Vec3(0, 0, -1), Vec3(0, 0, -1), Vec3(0, 0, -1)};
+    const std::array<glm::dvec2, 3> first = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)};
+    const std::array<glm::dvec2, 3> second = {glm::dvec2(0, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)};
+    Model model;
+    // 128 pixels of 600 on a viewport 1 wide at d = 1 is 0.21333 at z = 1, 1.06667 at z = 5.
+    const double half = 1.06667 / 2;
+    model.vertices = {{-half, half, 0}, {half, half, 0}, {half, -half, 0}, {-half, -half, 0}};
+    model.triangles = {{{0, 1, 2}, cgfs::kWhite, toward_camera, first},
+                       {{0, 2, 3}, cgfs::kWhite, toward_camera, second}};
+    model.closed = false;
+    model.texture = &OneTexelCheckerboard();
+    return model;
+  }();
+  static const Model floor = [] {
+    const std::array<Vec3, 3> up = {Vec3(0, 1, 0), Vec3(0, 1, 0), Vec3(0, 1, 0)};
+    Model model;
+    model.vertices = {{-2, 0, 12}, {2, 0, 12}, {2, 0, 2}, {-2, 0, 2}};
+    model.triangles = {
+        {{0, 1, 2}, cgfs::kWhite, up, {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)}},
+        {{0, 2, 3}, cgfs::kWhite, up, {glm::dvec2(0, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}}};
+    model.closed = false;
+    model.texture = &OneTexelCheckerboard();
+    return model;
+  }();
+  Scene scene;
+  scene.instances = {
+      {&square, {1, glm::dmat4(1.0), {-1.1, 0.9, 5}}},
+      {&floor, {1, glm::dmat4(1.0), {0.6, -1, 0}}},
+  };
+  scene.lights = {{LightType::kAmbient, 1}};
+  return scene;
+}
+
+namespace {
+
+// "Mipmapping", Figure 14-12: the chain's levels side by side, each drawn half as
+// large as the one before, level 0 half the canvas wide.
+void DrawMipChain(const MipmappedTexture& texture, Canvas& canvas) {
+  int left = -canvas.Width() / 2;
+  int side = canvas.Width() / 2;
+  const int top = canvas.Height() / 2 - 1;
+  for (const Texture& level : texture.levels) {
+    for (int row = 0; row < side; ++row) {
+      for (int column = 0; column < side; ++column) {
+        canvas.PutPixel(left + column, top - row,
+                        GetTexelNearest(level, (column + 0.5) * level.width / side,
+                                        (row + 0.5) * level.height / side));
+      }
+    }
+    left += side;
+    side = std::max(1, side / 2);
+  }
+}
+
+Shading WithTexturing(TextureInterpolation interpolation, TextureFilter filter) {
+  Shading shading;
+  shading.texturing = {interpolation, filter};
+  return shading;
+}
+
+}  // namespace
+
+std::vector<cgfs::Figure> Figures() {
+  using enum TextureFilter;
+  using enum TextureInterpolation;
+  const auto draw = [](Scene (*scene)(), Shading shading) {
+    return [scene, shading](Canvas& canvas) { RenderScene(scene(), canvas, {}, shading); };
+  };
+  return {
+      {"fig-14-3-affine",
+       "three crates, u and v interpolated linearly: the textures bend along the diagonals",
+       draw(SceneCrates, WithTexturing(kAffine, kNearest))},
+      {"fig-14-5-perspective-correct",
+       "the same crates, u/z and v/z interpolated: straight and in perspective",
+       draw(SceneCrates, WithTexturing(kPerspectiveCorrect, kNearest))},
+      {"fig-14-7-close-up-nearest", "a crate up close, nearest texel: blocks",
+       draw(SceneCrateCloseUp, WithTexturing(kPerspectiveCorrect, kNearest))},
+      {"fig-14-8-close-up-bilinear", "the same crate, bilinear filtering: smooth",
+       draw(SceneCrateCloseUp, WithTexturing(kPerspectiveCorrect, kBilinear))},
+      {"fig-14-11-minified-nearest",
+       "a one-texel checkerboard made small, nearest texel: noise and patterns, not grey",
+       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kNearest))},
+      {"minified-bilinear", "the same, bilinear: still patterns",
+       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kBilinear))},
+      {"minified-mipmap", "the same, mipmapping: grey, with steps between the levels",
+       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kMipmap))},
+      {"minified-trilinear", "the same, trilinear filtering: grey, no steps",
+       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kTrilinear))},
+      {"fig-14-12-mip-chain", "the crate texture and its mipmaps, each half the one before",
+       [](Canvas& canvas) { DrawMipChain(CrateTexture(), canvas); }},
+      {"crates-trilinear", "the crates with everything: perspective-correct, trilinear",
+       draw(SceneCrates, Shading{})},
+  };
+}

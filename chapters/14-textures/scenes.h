@@ -1,0 +1,40 @@
+// The models and scenes of the chapter's figures, and the figures themselves.
+#pragma once
+
+#include <vector>
+
+#include "cgfs/figure.h"
+#include "clipping.h"
+#include "texture.h"
+
+inline constexpr char kChapterDescription[] =
+    "Chapter 14, Textures: texture mapping, perspective-correct interpolation, bilinear "
+    "filtering, mipmapping, trilinear filtering.";
+
+// The cube of "Representing a Cube": edge 2, centred on the origin, each face two
+// triangles of one colour, wound so that (V1 - V0) x (V2 - V0) points outwards; every
+// corner's normal is its face's normal, and every face has the whole texture.
+const Model& CubeModel();
+
+// The scenes of Figures 10-3 and 10-10.
+Scene SceneTwoCubes();
+Scene SceneTransformedCubes();
+
+// The lights of chapter 13's figures.
+std::vector<Light> ShadingLights();
+
+// The crate texture and its mip chain: the project's own (MakeCrateTexture(256)),
+// unless UseCrateTexture gave another. Throws cgfs::Error for a texture larger than
+// 2048 texels a side.
+void UseCrateTexture(Texture texture);
+const MipmappedTexture& CrateTexture();
+
+// Figures 14-3 and 14-5: three crates.
+Scene SceneCrates();
+// Figures 14-7 and 14-8: one crate up close.
+Scene SceneCrateCloseUp();
+// Figure 14-11: a one-texel checkerboard on a small square and on a floor.
+Scene SceneMinifiedCheckerboard();
+
+// Every figure this chapter draws.
+std::vector<cgfs::Figure> Figures();

@@ -1,0 +1,128 @@
+// "Painting a Crate", "Bilinear Filtering", "Mipmapping", "Trilinear Filtering".
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "checks.h"
+#include "scenes.h"
+
+using Catch::Detail::Approx;
+using cgfs::test::CheckNear;
+
+namespace {
+
+// A texture of `width` x `height` whose texels are the given grey levels, row by row.
+Texture Greys(int width, int height, std::vector<double> levels) {
+  Texture texture{width, height, {}};
+  for (const double level : levels) {
+    texture.texels.push_back({level, level, level});
+  }
+  return texture;
+}
+
+long long TexelCount(const MipmappedTexture& chain) {
+  long long count = 0;
+  for (const Texture& level : chain.levels) {
+    count += static_cast<long long>(level.width) * level.height;
+  }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("u and v are not linear on the canvas, u/z and v/z are", "[texture]") {
+  // A = (-1, 0, 2) with u = 0, B = (1, 0, 10) with u = 1, d = 1: A' = -300 pixels,
+  // B' = 60. The screen midpoint x' = -0.2 (pixel -120) is 180 pixels from A'.
+  const std::size_t midpoint = 180;
+  CHECK(Interpolate(-300, 0, 60, 1)[midpoint] == Approx(0.5));  // affine: wrong
+  const double u_over_z = Interpolate(-300, 0.0 / 2, 60, 1.0 / 10)[midpoint];
+  const double inv_z = Interpolate(-300, 1.0 / 2, 60, 1.0 / 10)[midpoint];
+  CHECK(u_over_z == Approx(0.05));
+  CHECK(inv_z == Approx(0.3));
+  CHECK(u_over_z / inv_z == Approx(0.166667));  // perspective-correct
+  CHECK(1 / inv_z == Approx(3.333333));         // the true depth there
+}
+
+TEST_CASE("GetTexelNearest: floor(u w), clamped to the last texel", "[texture]") {
+  // Texel i has grey level i.
+  std::vector<double> columns;
+  for (int i = 0; i < 600; ++i) {
+    columns.push_back(i);
+  }
+  const Texture texture = Greys(600, 1, columns);
+  CHECK(GetTexelNearest(texture, 0.5 * 600, 0).r == 300);
+  CHECK(GetTexelNearest(texture, 1.0 * 600, 0).r == 599);  // u = 1: one past the last
+  CHECK(GetTexelNearest(texture, 0, 0).r == 0);
+  CHECK(GetTexelNearest(texture, -3, 0).r == 0);
+}
+
+TEST_CASE("GetTexel: bilinear filtering, the book's example", "[texture]") {
+  // TL = 0, TR = 100, BL = 50, BR = 250; fx = 0.25, fy = 0.5: CT = 25, CB = 100, 62.5.
+  const Texture texture = Greys(2, 2, {0, 100, 50, 250});
+  CHECK(GetTexel(texture, 0.25, 0.5).r == Approx(62.5));
+  CHECK(GetTexel(texture, 0, 0).r == 0);    // TL
+  CHECK(GetTexel(texture, 1, 0).r == 100);  // TR
+  CHECK(GetTexel(texture, 0.999999, 0).r == Approx(100).margin(1e-3));
+  CHECK(GetTexel(texture, 1.5, 1.5).r == 250);  // past the last row and column: BR again
+}
+
+TEST_CASE("BuildMipChain: 256x256 gives 9 levels, 87 381 texels, 4/3 of the first", "[mipmap]") {
+  const MipmappedTexture chain =
+      BuildMipChain(MakeCheckerboard(256, 1, cgfs::kBlack, cgfs::kWhite));
+  REQUIRE(chain.levels.size() == 9);
+  for (std::size_t k = 0; k < 9; ++k) {
+    CHECK(chain.levels[k].width == 256 >> k);
+    CHECK(chain.levels[k].height == 256 >> k);
+  }
+  CHECK(TexelCount(chain) == 87381);
+  CHECK(static_cast<double>(TexelCount(chain)) / 65536 == Approx(4.0 / 3).epsilon(1e-4));
+  // A one-texel checkerboard: every 2x2 block is two black and two white texels.
+  for (const Color& texel : chain.levels[1].texels) {
+    CHECK(texel == Color(127.5, 127.5, 127.5));
+  }
+}
+
+TEST_CASE("BuildMipChain: sizes that are not powers of two", "[mipmap]") {
+  // 600 -> 300 -> 150 -> 75 -> 37 -> 18 -> 9 -> 4 -> 2 -> 1.
+  const MipmappedTexture chain =
+      BuildMipChain(MakeCheckerboard(600, 3, cgfs::kBlack, cgfs::kWhite));
+  std::vector<int> widths;
+  for (const Texture& level : chain.levels) {
+    widths.push_back(level.width);
+  }
+  CHECK(widths == std::vector<int>{600, 300, 150, 75, 37, 18, 9, 4, 2, 1});
+  // 3x2: one level down is 1x1, the average of the first 2x2 block.
+  const MipmappedTexture small = BuildMipChain(Greys(3, 2, {0, 40, 200, 80, 120, 200}));
+  REQUIRE(small.levels.size() == 2);
+  CHECK(small.levels[1].texels[0].r == Approx(60));
+}
+
+TEST_CASE("MipLevel and the samplers for rho = 10", "[mipmap]") {
+  // A chain whose level k is uniformly 10 k grey.
+  MipmappedTexture chain;
+  for (int k = 0; k < 9; ++k) {
+    chain.levels.push_back(Greys(1, 1, {10.0 * k}));
+  }
+  CHECK(MipLevel(10, chain) == Approx(3.321928));
+  CHECK(MipLevel(0.5, chain) == 0);  // magnified: the full-size texture
+  CHECK(MipLevel(1e6, chain) == 8);  // beyond the last level: the last
+  // Mipmapping: the nearest level, 3 (8 times smaller). Trilinear: 0.3219 of the way
+  // from level 3 to level 4.
+  CHECK(SampleTexture(chain, 0.5, 0.5, 10, TextureFilter::kMipmap).r == Approx(30));
+  CHECK(SampleTexture(chain, 0.5, 0.5, 10, TextureFilter::kTrilinear).r == Approx(33.21928));
+  CHECK(SampleTexture(chain, 0.5, 0.5, 10, TextureFilter::kBilinear).r == 0);
+  CHECK(SampleTexture(chain, 0.5, 0.5, 10, TextureFilter::kNearest).r == 0);
+}
+
+TEST_CASE("TexelsPerPixel: the faster of the two directions, in texels", "[mipmap]") {
+  const Texture texture = MakeCheckerboard(256, 1, cgfs::kBlack, cgfs::kWhite);
+  // 256 texels over 128 pixels: 2 texels per pixel.
+  CHECK(TexelsPerPixel({1.0 / 128, 0}, {0, 1.0 / 128}, texture) == Approx(2));
+  CHECK(TexelsPerPixel({1.0 / 128, 0}, {0, 1.0 / 16}, texture) == Approx(16));
+  CHECK(TexelsPerPixel({3.0 / 256, 4.0 / 256}, {0, 0}, texture) == Approx(5));
+}
+
+TEST_CASE("UseCrateTexture refuses a texture too large to keep", "[texture]") {
+  CHECK_THROWS_WITH(UseCrateTexture(Greys(2049, 1, std::vector<double>(2049, 0))),
+                    Catch::Contains("2049x1 is too large"));
+}
