@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include "cgfs/error.h"
 
@@ -23,6 +24,15 @@ bool ParseArguments(CLI::App& app, int argc, const char* const* argv) {
     throw UsageError("unexpected arguments: " + extras);
   }
   return true;
+}
+
+void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
+                   const std::string& help, const std::string& type_name) {
+  app.add_option("--" + name, value, help)->type_name(type_name);
+}
+
+void AfterParsing(CLI::App& app, std::function<void()> callback) {
+  app.final_callback(std::move(callback));
 }
 
 }  // namespace cgfs

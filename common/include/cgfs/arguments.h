@@ -1,6 +1,9 @@
 // Parsing a program's arguments with CLI11, the same way in every program.
 #pragma once
 
+#include <functional>
+#include <string>
+
 namespace CLI {
 class App;
 }
@@ -11,5 +14,15 @@ namespace cgfs {
 // returns false for --help; throws (see RunReportingErrors) on anything wrong, with
 // arguments that name no option reported in the order they were given.
 bool ParseArguments(CLI::App& app, int argc, const char* const* argv);
+
+// For a chapter's options.cpp, without including CLI11 (a large header that takes
+// seconds to compile): an option `--name VALUE` read into `value`, shown in the help
+// as `--name TYPE_NAME  help`.
+void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
+                   const std::string& help, const std::string& type_name);
+
+// Runs `callback` once the whole command line has been read, before anything is
+// drawn; what it throws is reported like any other error (RunReportingErrors).
+void AfterParsing(CLI::App& app, std::function<void()> callback);
 
 }  // namespace cgfs
