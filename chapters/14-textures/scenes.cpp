@@ -84,8 +84,6 @@ std::optional<MipmappedTexture>& ChosenCrateTexture() {
   return texture;
 }
 
-constexpr int kMaxTextureSide = 2048;
-
 }  // namespace
 
 void UseCrateTexture(Texture texture) {

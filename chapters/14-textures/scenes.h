@@ -25,7 +25,7 @@ std::vector<Light> ShadingLights();
 
 // The crate texture and its mip chain: the project's own (MakeCrateTexture(256)),
 // unless UseCrateTexture gave another. Throws cgfs::Error for a texture larger than
-// 2048 texels a side.
+// kMaxTextureSide a side.
 void UseCrateTexture(Texture texture);
 const MipmappedTexture& CrateTexture();
 

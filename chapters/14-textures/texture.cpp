@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <string>
+
+#include "cgfs/error.h"
 #include "cgfs/image_io.h"
 
 const Color& Texture::At(int i, int j) const {
@@ -26,7 +29,13 @@ Texture TextureFromImage(const cgfs::Image& image) {
 }
 
 Texture LoadTexture(const std::filesystem::path& path) {
-  return TextureFromImage(cgfs::ReadImage(path));
+  const cgfs::Image image = cgfs::ReadImage(path);
+  if (image.Width() > kMaxTextureSide || image.Height() > kMaxTextureSide) {
+    throw cgfs::Error("'" + path.string() + "' is " + std::to_string(image.Width()) + "x" +
+                      std::to_string(image.Height()) + ", too large for a texture (at most " +
+                      std::to_string(kMaxTextureSide) + " a side)");
+  }
+  return TextureFromImage(image);
 }
 
 Texture MakeCrateTexture(int size) {
