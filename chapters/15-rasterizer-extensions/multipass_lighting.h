@@ -1,0 +1,62 @@
+// Chapter 15, "Stencil Shadows", its first step: multi-pass lighting. The scene is
+// drawn once per light, each pass lit by that light alone, and the passes' colours
+// are added pixel by pixel. The sum is kept in floating point and clamped once, at
+// the end: clamping each pass would lose whatever light a pass had above 255.
+#pragma once
+
+#include <vector>
+
+#include "depth_buffer.h"
+#include "stencil_buffer.h"
+
+// A floating-point colour per pixel of the canvas: the sum of the passes so far.
+class AccumulationBuffer {
+ public:
+  explicit AccumulationBuffer(const Canvas& canvas);
+
+  // The next pass begins: each pass adds to a pixel at most once.
+  void BeginPass();
+
+  // The first pass: (x, y) becomes `color` (a closer triangle replaces a farther one).
+  void Set(int x, int y, const Color& color);
+
+  // A later pass: `color` added to (x, y), unless this pass has already added to it
+  // (two triangles that share an edge both cover the pixels on it, at the same
+  // depth: only the first may count). False if it was not added.
+  bool Add(int x, int y, const Color& color);
+
+  // Whether this pass may still add to (x, y).
+  bool CanAdd(int x, int y) const;
+
+  // The sum written to the canvas, clamped there; pixels no pass drew are left as
+  // they are.
+  void WriteTo(Canvas& canvas) const;
+
+ private:
+  // Where (x, y) is kept (as PutPixel maps it to the image), or -1 off the canvas.
+  std::ptrdiff_t Index(int x, int y) const;
+
+  const Canvas* canvas_;
+  std::vector<Color> colors_;
+  std::vector<int> last_pass_;  // the pass that last drew each pixel; -1: none
+  int pass_ = 0;
+};
+
+// How a pass treats the pixels of a triangle it draws.
+struct Pass {
+  // Where the colours go: nullptr draws straight onto the canvas, in one pass
+  // (chapters 12 to 14).
+  AccumulationBuffer* sum = nullptr;
+  // The first pass: depth test and set, as in chapter 12, the colour Set. A later
+  // pass leaves the depth buffer as it is: it draws only where a triangle's depth is
+  // exactly what the first pass stored (the same triangle, rasterised again the
+  // same way, gives the same 1/z), and only where `stencil` (if any) holds 0.
+  bool first = true;
+  const StencilBuffer* stencil = nullptr;
+};
+
+// Whether the pass draws pixel (x, y) of a triangle whose 1/z there is `depth`.
+bool PassDepthTest(const Pass& pass, DepthBuffer& depth_buffer, int x, int y, double depth);
+
+// The pixel's colour, where the pass sends it.
+void PassWrite(const Pass& pass, Canvas& canvas, int x, int y, const Color& color);

@@ -1,0 +1,357 @@
+#include "scenes.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "cgfs/error.h"
+#include "sphere_model.h"
+
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
+// each face's two triangles have its normal at every corner. Chapter 14, "Painting a
+// Crate": each face's first triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its
+// second (A, C, D) has (0, 0), (1, 1), (0, 1): the whole texture on every face.
+const Model& CubeModel() {
+  const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
+  const std::array<glm::dvec2, 3> first = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)};
+  const std::array<glm::dvec2, 3> second = {glm::dvec2(0, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)};
+  static const Model cube{
+      {
+          {1, 1, 1},
+          {-1, 1, 1},
+          {-1, -1, 1},
+          {1, -1, 1},
+          {1, 1, -1},
+          {-1, 1, -1},
+          {-1, -1, -1},
+          {1, -1, -1},
+      },
+      {
+          {{0, 1, 2}, cgfs::kRed, face({0, 0, 1}), first},
+          {{0, 2, 3}, cgfs::kRed, face({0, 0, 1}), second},  // z = +1
+          {{4, 0, 3}, cgfs::kGreen, face({1, 0, 0}), first},
+          {{4, 3, 7}, cgfs::kGreen, face({1, 0, 0}), second},  // x = +1
+          {{5, 4, 7}, cgfs::kBlue, face({0, 0, -1}), first},
+          {{5, 7, 6}, cgfs::kBlue, face({0, 0, -1}), second},  // z = -1
+          {{1, 5, 6}, cgfs::kYellow, face({-1, 0, 0}), first},
+          {{1, 6, 2}, cgfs::kYellow, face({-1, 0, 0}), second},  // x = -1
+          {{4, 5, 1}, cgfs::kPurple, face({0, 1, 0}), first},
+          {{4, 1, 0}, cgfs::kPurple, face({0, 1, 0}), second},  // y = +1
+          {{2, 6, 7}, cgfs::kCyan, face({0, -1, 0}), first},
+          {{2, 7, 3}, cgfs::kCyan, face({0, -1, 0}), second},  // y = -1
+      },
+  };
+  return cube;
+}
+
+// Figure 10-3: two instances of the cube, the camera at the origin.
+Scene SceneTwoCubes() {
+  Scene scene;
+  scene.instances = {
+      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
+  };
+  return scene;
+}
+
+// Figure 10-10: the instances scaled and rotated, seen from a camera moved back
+// and to the left and turned 30 degrees to the right. Also the scene of
+// chapters 11 to 14.
+Scene SceneTransformedCubes() {
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&CubeModel(), {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&CubeModel(), {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+  };
+  return scene;
+}
+
+// The lights of Figures 13-1 to 13-9, in world space.
+std::vector<Light> ShadingLights() {
+  return {
+      {LightType::kAmbient, 0.2},
+      {LightType::kDirectional, 0.2, {}, {-1, 0, 1}},
+      {LightType::kPoint, 0.6, {-3, 2, -10}},
+  };
+}
+
+namespace {
+
+// The texture on the crates: the project's own, or the one --texture gave.
+std::optional<MipmappedTexture>& ChosenCrateTexture() {
+  static std::optional<MipmappedTexture> texture;
+  return texture;
+}
+
+}  // namespace
+
+void UseCrateTexture(Texture texture) {
+  if (texture.width > kMaxTextureSide || texture.height > kMaxTextureSide) {
+    throw cgfs::Error("a texture of " + std::to_string(texture.width) + "x" +
+                      std::to_string(texture.height) + " is too large (at most " +
+                      std::to_string(kMaxTextureSide) + " a side)");
+  }
+  ChosenCrateTexture() = BuildMipChain(std::move(texture));
+}
+
+const MipmappedTexture& CrateTexture() {
+  static const MipmappedTexture ours = BuildMipChain(MakeCrateTexture(256));
+  return ChosenCrateTexture() ? *ChosenCrateTexture() : ours;
+}
+
+// A cube model with a texture on every face.
+Model TexturedCube(const MipmappedTexture& texture) {
+  Model model = CubeModel();
+  model.texture = &texture;
+  return model;
+}
+
+// Figures 14-3 and 14-5: three crates, seen from Figure 10-10's camera, lit as in
+// chapter 13.
+Scene SceneCrates() {
+  static Model crate;
+  crate = TexturedCube(CrateTexture());
+  Scene scene;
+  scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
+  scene.instances = {
+      {&crate, {0.75, glm::dmat4(1.0), {-1.5, 0, 7}}},
+      {&crate, {1, MakeOYRotationMatrix(195), {1.25, 2.5, 7.5}}},
+      {&crate, {1, MakeOYRotationMatrix(-30), {1.75, 0, 5}}},
+  };
+  scene.lights = ShadingLights();
+  return scene;
+}
+
+namespace {
+
+// A flat quad with corners a (top-left), b, c, d in order around it, (b - a) x (c - a)
+// its outward normal; the whole texture on it, (u, v) = (0, 0) at a. Open: it has
+// one side.
+Model Quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Color& color) {
+  const Vec3 N = ComputeTriangleNormal(a, b, c);
+  const std::array<Vec3, 3> normals = {N, N, N};
+  Model model;
+  model.vertices = {a, b, c, d};
+  model.triangles = {
+      {{0, 1, 2}, color, normals, {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)}},
+      {{0, 2, 3}, color, normals, {glm::dvec2(0, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}}};
+  model.closed = false;
+  return model;
+}
+
+const Texture& DiamondNormalMap() {
+  static const Texture normal_map = MakeDiamondNormalMap(256, 8);
+  return normal_map;
+}
+
+// A floor 20 x 20 at height y, from z = -2 to z = 18.
+Model Floor(double y) {
+  return Quad({-10, y, 18}, {10, y, 18}, {10, y, -2}, {-10, y, -2}, Color(200, 200, 200));
+}
+
+const MipmappedTexture& FloorCheckerboard() {
+  static const MipmappedTexture checkerboard =
+      BuildMipChain(MakeCheckerboard(512, 16, Color(200, 60, 50), Color(235, 235, 235)));
+  return checkerboard;
+}
+
+}  // namespace
+
+Scene SceneNormalMappedSquare(bool light_from_left) {
+  static const Model square = [] {
+    Model model = Quad({-1, 1, 5}, {1, 1, 5}, {1, -1, 5}, {-1, -1, 5}, Color(210, 200, 180));
+    model.normal_map = &DiamondNormalMap();
+    return model;
+  }();
+  Scene scene;
+  scene.instances = {{&square, {}}};
+  scene.lights = {{LightType::kAmbient, 0.2},
+                  {LightType::kPoint, 0.8, {light_from_left ? -3.0 : 3.0, 0, 4}}};
+  return scene;
+}
+
+Scene SceneMirrorSphere() {
+  static const Model floor = [] {
+    Model model = Floor(-1);
+    model.texture = &FloorCheckerboard();
+    return model;
+  }();
+  static const Model mirror = [] {
+    Model model = GenerateSphere(24, Color(40, 40, 40));
+    model.specular = 500;
+    model.reflective = 0.8;
+    return model;
+  }();
+  Scene scene = SceneCrates();
+  scene.instances.push_back({&floor, {}});
+  scene.instances.push_back({&mirror, {1, glm::dmat4(1.0), {0.6, 0, 7.2}}});
+  scene.lights = {{LightType::kAmbient, 0.25}, {LightType::kPoint, 0.75, {-4, 7, 4}}};
+  return scene;
+}
+
+Scene SceneShading() {
+  static const Model sphere = GenerateSphere(15, cgfs::kGreen);
+  Scene scene = SceneTransformedCubes();
+  scene.instances.push_back({&sphere, {1.5, glm::dmat4(1.0), {1.75, -0.5, 7}}});
+  scene.lights = ShadingLights();
+  return scene;
+}
+
+Scene SceneShadows() {
+  static const Model floor = Floor(-2);
+  Scene scene = SceneShading();
+  scene.instances.push_back({&floor, {}});
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kPoint, 0.8, {-4, 7, 4}}};
+  return scene;
+}
+
+Scene SceneShadowsDirectional() {
+  Scene scene = SceneShadows();
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kDirectional, 0.8, {}, {-1, 2, -0.5}}};
+  return scene;
+}
+
+Scene SceneCameraInShadow() {
+  static const Model floor = Floor(0);
+  static const Model sphere = GenerateSphere(15, cgfs::kGreen);
+  Scene scene;
+  scene.camera = {{0, 1, 0}, glm::dmat4(1.0)};
+  scene.instances = {
+      {&CubeModel(), {1.5, glm::dmat4(1.0), {0, 4, 2}}},  // the slab overhead, out of view
+      {&sphere, {0.8, glm::dmat4(1.0), {-1, 0.8, 6}}},
+      {&CubeModel(), {0.6, MakeOYRotationMatrix(30), {1.2, 0.6, 5}}},
+      {&floor, {}},
+  };
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kPoint, 0.8, {0, 10, 6}}};
+  return scene;
+}
+
+Scene SceneEverything() {
+  static const Model floor = [] {
+    Model model = Floor(-1);
+    model.texture = &FloorCheckerboard();
+    model.normal_map = &DiamondNormalMap();
+    return model;
+  }();
+  Scene scene = SceneMirrorSphere();
+  scene.instances[3].model = &floor;
+  return scene;
+}
+
+namespace {
+
+// "Environment Mapping": a cube map unfolded as a cross, each face `size` pixels
+// wide: +Y above +Z, then -X, +Z, +X, -Z in a row, -Y below +Z.
+void DrawCubeMap(const CubeMap& cube_map, Canvas& canvas) {
+  const int size = cube_map.faces[0].width;
+  const auto draw = [&](CubeFace face, int column, int row) {
+    const Texture& texture = cube_map.faces[static_cast<std::size_t>(face)];
+    for (int j = 0; j < size; ++j) {
+      for (int i = 0; i < size; ++i) {
+        canvas.PutPixel(-canvas.Width() / 2 + column * size + i,
+                        canvas.Height() / 2 - 1 - (row * size + j), texture.At(i, j));
+      }
+    }
+  };
+  draw(CubeFace::kPositiveY, 1, 0);
+  draw(CubeFace::kNegativeX, 0, 1);
+  draw(CubeFace::kPositiveZ, 1, 1);
+  draw(CubeFace::kPositiveX, 2, 1);
+  draw(CubeFace::kNegativeZ, 3, 1);
+  draw(CubeFace::kNegativeY, 1, 2);
+}
+
+template <typename Change>
+Extensions With(const Change& change) {
+  Extensions extensions;
+  change(extensions);
+  return extensions;
+}
+
+}  // namespace
+
+std::vector<cgfs::Figure> Figures() {
+  const auto draw = [](Scene (*scene)(), Extensions extensions) {
+    return
+        [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, {}, extensions); };
+  };
+  const auto draw_square = [](bool light_from_left, bool normal_mapping) {
+    return [=](Canvas& canvas) {
+      RenderScene(SceneNormalMappedSquare(light_from_left), canvas, {}, {},
+                  With([=](Extensions& e) { e.normal_mapping = normal_mapping; }));
+    };
+  };
+  const auto one_light = [](std::size_t k) {
+    return [k](Canvas& canvas) {
+      Scene scene = SceneShading();
+      scene.lights = {scene.lights[k]};
+      RenderScene(scene, canvas);
+    };
+  };
+  const Extensions environment = With([](Extensions& e) { e.environment_mapping = true; });
+  const Extensions passes = With([](Extensions& e) { e.multipass_lighting = true; });
+  const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
+  const Extensions depth_pass = With([](Extensions& e) {
+    e.shadows = Shadows::kShadowVolumes;
+    e.shadow_volume_counting = ShadowVolumeCounting::kDepthPass;
+  });
+  const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
+  const Extensions maps_pcf = With([](Extensions& e) {
+    e.shadows = Shadows::kShadowMaps;
+    e.shadow_mapping.percentage_closer_filtering = true;
+  });
+  const Extensions everything = With([](Extensions& e) {
+    e.normal_mapping = true;
+    e.environment_mapping = true;
+    e.shadows = Shadows::kShadowMaps;
+    e.shadow_mapping.percentage_closer_filtering = true;
+  });
+  return {
+      {"fig-15-1a-square-without-normal-map", "a flat square lit from the left: flat",
+       draw_square(true, false)},
+      {"fig-15-1b-normal-map-lit-from-left",
+       "the same square with a normal map: diamond bumps, lit on their left faces",
+       draw_square(true, true)},
+      {"fig-15-1c-normal-map-lit-from-right", "the same, lit from the right: the other faces",
+       draw_square(false, true)},
+      {"fig-15-2-environment-map",
+       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
+       draw(SceneMirrorSphere, environment)},
+      {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
+       [](Canvas& canvas) {
+         const Scene scene = SceneMirrorSphere();
+         DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
+                     canvas);
+       }},
+      {"fig-15-3a-ambient-pass", "chapter 13's scene lit by its ambient light alone", one_light(0)},
+      {"fig-15-3b-directional-pass", "lit by its directional light alone", one_light(1)},
+      {"fig-15-3c-point-pass", "lit by its point light alone", one_light(2)},
+      {"fig-15-3d-sum-of-passes", "the three passes added up, clamped once: as one pass",
+       draw(SceneShading, passes)},
+      {"no-shadows", "chapter 13's objects over a floor, lit from above left, no shadows",
+       draw(SceneShadows, {})},
+      {"fig-15-4-shadow-volumes", "the same with stencil shadows (depth fail)",
+       draw(SceneShadows, volumes)},
+      {"camera-in-shadow-depth-fail", "the camera inside a shadow volume: depth fail counts right",
+       draw(SceneCameraInShadow, volumes)},
+      {"camera-in-shadow-depth-pass",
+       "the same counted in front of the surface (depth pass): shadow and light swapped",
+       draw(SceneCameraInShadow, depth_pass)},
+      {"fig-15-5-shadow-map", "shadow mapping, 256 x 256 per view, no filtering: blocky edges",
+       draw(SceneShadows, maps)},
+      {"fig-15-6-shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
+       draw(SceneShadows, maps_pcf)},
+      {"shadow-map-directional",
+       "a directional light's shadows from one orthographic 512 x 512 map, filtered",
+       draw(SceneShadowsDirectional, With([](Extensions& e) {
+              e.shadows = Shadows::kShadowMaps;
+              e.shadow_mapping.size = 512;
+              e.shadow_mapping.percentage_closer_filtering = true;
+            }))},
+      {"everything",
+       "textures, a normal-mapped floor, a mirror sphere and filtered shadow maps at once",
+       draw(SceneEverything, everything)},
+  };
+}

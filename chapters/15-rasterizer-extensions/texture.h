@@ -1,0 +1,50 @@
+// Chapter 14, "Textures": images painted onto triangles, and GetTexel.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "cgfs/color.h"
+#include "cgfs/image.h"
+
+using cgfs::Color;
+
+// "Painting a Crate": a 2-D array of texels. A point of the texture is (u, v), both in
+// [0, 1] whatever its size, with (0, 0) at the top-left, u to the right and v down;
+// (u, v) is texel (u * width, v * height).
+struct Texture {
+  int width = 0;
+  int height = 0;
+  std::vector<Color> texels;  // row by row from the top
+
+  // The texel in column i, row j, both clamped to the texture: the book's texture[i][j].
+  const Color& At(int i, int j) const;
+};
+
+// The image's pixels as texels, its top row first.
+Texture TextureFromImage(const cgfs::Image& image);
+
+// The largest texture accepted, a side: 2048 x 2048 texels of 24 bytes are 100 MB,
+// and their mip chain a third more.
+inline constexpr int kMaxTextureSide = 2048;
+
+// A PNG, JPEG or PPM file as a texture (cgfs::ReadImage). Throws cgfs::Error for a
+// file that is not such an image, or one larger than kMaxTextureSide a side (checked
+// before any texel is made).
+Texture LoadTexture(const std::filesystem::path& path);
+
+// The project's stand-in for the book's crate photograph: a wooden crate side of
+// size x size texels, drawn in code (planks, a frame, a diagonal brace, nails).
+Texture MakeCrateTexture(int size);
+
+// A size x size checkerboard of `cell` x `cell` squares, `a` at the top-left.
+Texture MakeCheckerboard(int size, int cell, const Color& a, const Color& b);
+
+// "Painting a Crate": the texel that contains (tx, ty) = (u * width, v * height),
+// texture[floor(tx)][floor(ty)], clamped (u = 1 gives tx = width, one past the last).
+Color GetTexelNearest(const Texture& texture, double tx, double ty);
+
+// "Bilinear Filtering": the four texels around (tx, ty) blended by its fractional
+// parts. The texel (i, j) sits at the integer point (i, j); beyond the last column
+// or row the last one is used again.
+Color GetTexel(const Texture& texture, double tx, double ty);

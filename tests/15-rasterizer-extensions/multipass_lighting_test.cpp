@@ -1,0 +1,49 @@
+// Chapter 15, "Stencil Shadows", step 1: multi-pass lighting.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+
+#include "multipass_lighting.h"
+#include "scenes.h"
+
+TEST_CASE("the accumulation buffer adds each pass once per pixel, and clamps at the end",
+          "[multipass]") {
+  Canvas canvas(4, 4, cgfs::kBlack);
+  AccumulationBuffer sum(canvas);
+  sum.Set(0, 0, {100, 50, 0});
+  sum.Set(0, 0, {200, 150, 10});  // a closer triangle replaces the farther one
+  sum.BeginPass();
+  CHECK(sum.Add(0, 0, {100, 50, 20}));
+  CHECK_FALSE(sum.Add(0, 0, {100, 50, 20}));  // a second triangle on the same pixel
+  CHECK_FALSE(sum.CanAdd(0, 0));
+  CHECK_FALSE(sum.Add(7, 7, {1, 1, 1}));  // off the canvas
+  sum.BeginPass();
+  CHECK(sum.Add(0, 0, {0, 0, 0.4}));
+  sum.WriteTo(canvas);
+  CHECK(canvas.GetPixel(0, 0) == cgfs::Rgb8{255, 200, 30});
+  CHECK(canvas.GetPixel(1, 1) == cgfs::Rgb8{0, 0, 0});  // no pass drew it: left alone
+}
+
+TEST_CASE("the passes of chapter 13's scene add up to the one-pass image", "[multipass]") {
+  // Clamped once after a floating-point sum, passes differ from one pass only where
+  // the sums round differently: by one level at most.
+  Canvas one_pass(600, 600);
+  RenderScene(SceneShading(), one_pass);
+  Canvas passes(600, 600);
+  Extensions extensions;
+  extensions.multipass_lighting = true;
+  RenderScene(SceneShading(), passes, {}, {}, extensions);
+  int differ = 0;
+  int worst = 0;
+  for (int y = -300; y < 300; ++y) {
+    for (int x = -300; x < 300; ++x) {
+      const cgfs::Rgb8 a = one_pass.GetPixel(x, y);
+      const cgfs::Rgb8 b = passes.GetPixel(x, y);
+      const int d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+      differ += d > 0;
+      worst = std::max(worst, d);
+    }
+  }
+  CHECK(worst <= 1);
+  CHECK(differ < 600 * 600 / 100);
+}
