@@ -40,8 +40,10 @@ struct CubeMap {
 
 // The surroundings seen from `centre`: the scene's non-reflective instances rendered
 // six times with 90-degree views (viewport 2 x 2 at d = 1), size x size pixels each,
-// lit and shaded as the scene is. The reflective ones are left out: each would
-// otherwise have to be in the others' maps, and its own map is made from inside it.
+// lit by the scene's lights with the default (Phong) shading and none of chapter 15's
+// stages, so reflections show no shadows. The reflective ones are left out: each
+// would otherwise have to be in the others' maps, and its own map is made from inside
+// it.
 CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size);
 
 // Chapter 4's ReflectRay: R reflected about the normal N, 2N<N, R> - R.

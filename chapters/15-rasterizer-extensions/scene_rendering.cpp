@@ -165,6 +165,7 @@ void RenderInPasses(const Viewport& viewport, const CameraSpaceScene& unclipped,
 void RenderScene(const Scene& scene, Canvas& canvas, const HiddenSurfaceRemoval& method,
                  const Shading& shading, const Extensions& extensions) {
   // "Environment Mapping": one cube map per reflective instance, around its centre.
+  // Reserved in full, because the camera-space instances keep pointers into it.
   std::vector<CubeMap> environments;
   environments.reserve(scene.instances.size());
   // "Shadow Mapping": one shadow map per light.

@@ -26,6 +26,23 @@ Model FacingSquare() {
   return square;
 }
 
+// Built member by member, so that the later chapters, whose Shading and Lighting
+// have more members, can run these tests too.
+Shading ShadingOf(ShadingModel model, NormalSource normals, LightingTerms terms) {
+  Shading shading;
+  shading.model = model;
+  shading.normals = normals;
+  shading.terms = terms;
+  return shading;
+}
+
+Lighting LightingOf(std::vector<Light> lights, const Shading& shading) {
+  Lighting lighting;
+  lighting.lights = std::move(lights);
+  lighting.shading = shading;
+  return lighting;
+}
+
 Canvas RenderWith(const Scene& scene, const Shading& shading) {
   Canvas canvas(600, 600);
   RenderScene(scene, canvas, {}, shading);
@@ -73,8 +90,10 @@ TEST_CASE("a large face lit from close by: Gouraud 0.070535 at its centre, Phong
   // At a corner: L = (-1, -1, -0.1), <N, L> = 0.1, |L| = sqrt(2.01).
   CHECK(ComputeLighting({1, 1, 5}, {0, 0, -1}, {-1, -1, -5}, -1, scene.lights) == Approx(0.070535));
   const LightingTerms diffuse{true, false};
-  const Canvas gouraud = RenderWith(scene, {ShadingModel::kGouraud, NormalSource::kModel, diffuse});
-  const Canvas phong = RenderWith(scene, {ShadingModel::kPhong, NormalSource::kModel, diffuse});
+  const Canvas gouraud =
+      RenderWith(scene, ShadingOf(ShadingModel::kGouraud, NormalSource::kModel, diffuse));
+  const Canvas phong =
+      RenderWith(scene, ShadingOf(ShadingModel::kPhong, NormalSource::kModel, diffuse));
   CHECK(gouraud.GetPixel(0, 0) == Rgb8{18, 18, 18});    // 255 x 0.070535 = 17.99
   CHECK(phong.GetPixel(0, 0) == Rgb8{255, 255, 255});   // 255 x 1.0
   CHECK(gouraud.GetPixel(60, 60) == Rgb8{18, 18, 18});  // Gouraud: the same everywhere
@@ -85,8 +104,9 @@ TEST_CASE("Phong interpolates the normal, Gouraud the light", "[shading]") {
   // A triangle whose corner normals turn from (1, 0, 0) to (0, 1, 0); a directional
   // light along (1, 1, 0). Gouraud: 1/sqrt(2) at both corners, so 0.707 between them.
   // Phong: the normal midway is (1, 1, 0)/sqrt(2), the light's own direction: 1.0.
-  const Lighting gouraud{{{LightType::kDirectional, 1, {}, {1, 1, 0}}},
-                         {ShadingModel::kGouraud, NormalSource::kModel, {true, false}}};
+  const Lighting gouraud =
+      LightingOf({{LightType::kDirectional, 1, {}, {1, 1, 0}}},
+                 ShadingOf(ShadingModel::kGouraud, NormalSource::kModel, {true, false}));
   Lighting phong = gouraud;
   phong.shading.model = ShadingModel::kPhong;
   const Canvas canvas(600, 600);
@@ -117,9 +137,9 @@ TEST_CASE("flat shading: a face's two triangles differ under a point light only"
       {{{-1, 1, 5}, {}, N[0]}, {{1, 1, 5}, {}, N[1]}, {{1, -1, 5}, {}, N[2]}}};
   const std::array<ShadedCorner, 3> second = {
       {{{-1, 1, 5}, {}, N[0]}, {{1, -1, 5}, {}, N[1]}, {{-1, -1, 5}, {}, N[2]}}};
-  const Shading flat{ShadingModel::kFlat, NormalSource::kTriangle, {true, false}};
-  const Lighting point{{{LightType::kPoint, 0.6, {3, 0, 2}}}, flat};
-  const Lighting directional{{{LightType::kDirectional, 0.6, {}, {1, 0, -1}}}, flat};
+  const Shading flat = ShadingOf(ShadingModel::kFlat, NormalSource::kTriangle, {true, false});
+  const Lighting point = LightingOf({{LightType::kPoint, 0.6, {3, 0, 2}}}, flat);
+  const Lighting directional = LightingOf({{LightType::kDirectional, 0.6, {}, {1, 0, -1}}}, flat);
   CHECK(std::abs(FlatIllumination(first, 50, point) - FlatIllumination(second, 50, point)) > 0.01);
   CHECK(FlatIllumination(first, 50, directional) ==
         Approx(FlatIllumination(second, 50, directional)).epsilon(1e-12));
