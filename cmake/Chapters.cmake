@@ -137,16 +137,6 @@ function(cgfs_add_chapter chapter)
     # files may each have a helper of the same name, and a missing #include shows.
     set_target_properties(${chapter}-lib PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
     cgfs_reuse_chapter_headers(${chapter}-lib)
-    # A chapter's options.cpp that includes CLI11 (chapter 5's) only adds command-line
-    # options: it is compiled on its own and without optimisation, like common's
-    # command-line files, so that CLI11 does not slow the chapter's unit down.
-    if(EXISTS "${dir}/options.cpp")
-      file(READ "${dir}/options.cpp" options_source)
-      if(options_source MATCHES "CLI/CLI.hpp")
-        set_source_files_properties("${dir}/options.cpp" TARGET_DIRECTORY ${chapter}-lib
-          PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON SKIP_PRECOMPILE_HEADERS ON COMPILE_OPTIONS -O0)
-      endif()
-    endif()
   endif()
 
   set(main "${dir}/main.cpp")

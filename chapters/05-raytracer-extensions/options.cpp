@@ -1,9 +1,8 @@
 #include "options.h"
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 
+#include "cgfs/arguments.h"
 #include "cgfs/error.h"
 #include "optimizations.h"
 
@@ -17,14 +16,13 @@ int threads = 0;  // 0: one per core
 }  // namespace
 
 void AddChapterOptions(CLI::App& app) {
-  app.add_option("--optimizations", optimizations_text,
-                 "none, all (default: every exact one), or a comma list of threads, cache, "
-                 "shadow-any-hit, shadow-coherence, bvh, subsampling")
-      ->type_name("LIST");
-  app.add_option("--threads", threads, "workers when 'threads' is on (default: one per core)")
-      ->type_name("N")
-      ->check(CLI::Range(1, kMaxThreads));
-  app.final_callback([] {
+  cgfs::AddTextOption(app, "optimizations", optimizations_text,
+                      "none, all (default: every exact one), or a comma list of threads, "
+                      "cache, shadow-any-hit, shadow-coherence, bvh, subsampling",
+                      "LIST");
+  cgfs::AddIntOption(app, "threads", threads,
+                     "workers when 'threads' is on (default: one per core)", "N", 1, kMaxThreads);
+  cgfs::AfterParsing(app, [] {
     Optimizations chosen = ParseOptimizations(optimizations_text);
     if (threads > 1 && chosen.threads == 1) {
       throw cgfs::UsageError("--threads " + std::to_string(threads) +

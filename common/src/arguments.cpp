@@ -31,6 +31,18 @@ void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
   app.add_option("--" + name, value, help)->type_name(type_name);
 }
 
+void AddIntOption(CLI::App& app, const std::string& name, int& value, const std::string& help,
+                  const std::string& type_name, int min, int max) {
+  app.add_option("--" + name, value, help)->type_name(type_name)->check(CLI::Range(min, max));
+}
+
+void SetDefaultSize(CLI::App& app, const std::string& size) {
+  CLI::Option* option = app.get_option("--size");
+  const std::string help = option->get_description();
+  const std::size_t start = help.find("(default ");
+  option->default_val(size)->description(help.substr(0, start) + "(default " + size + ")");
+}
+
 void AfterParsing(CLI::App& app, std::function<void()> callback) {
   app.final_callback(std::move(callback));
 }

@@ -21,6 +21,14 @@ bool ParseArguments(CLI::App& app, int argc, const char* const* argv);
 void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
                    const std::string& help, const std::string& type_name);
 
+// The same for a whole number: `--name N`, accepted only in [min, max].
+void AddIntOption(CLI::App& app, const std::string& name, int& value, const std::string& help,
+                  const std::string& type_name, int min, int max);
+
+// For a chapter whose figures have a size of their own (the business card is
+// 512x512): the --size the chapter program uses when none is given.
+void SetDefaultSize(CLI::App& app, const std::string& size);
+
 // Runs `callback` once the whole command line has been read, before anything is
 // drawn; what it throws is reported like any other error (RunReportingErrors).
 void AfterParsing(CLI::App& app, std::function<void()> callback);
