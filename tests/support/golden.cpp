@@ -43,9 +43,10 @@ std::string GoldenFile(const std::string& chapter, const std::string& name) {
   return (fs::path(CGFS_GOLDEN_DIR) / chapter / (name + ".png")).string();
 }
 
-void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& figures,
-                        const std::string& name) {
-  const Image actual = RenderFigureNamed(figures, name).GetImage();
+namespace {
+
+// The golden image of the figure; a test failure if there is none.
+Image ReadGolden(const std::string& chapter, const std::string& name) {
   const fs::path golden = GoldenFile(chapter, name);
   INFO("golden image: " << golden.string());
   if (!fs::exists(golden)) {
@@ -53,7 +54,13 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
         "no golden image; render it with `cmake --build build --target update-golden`, "
         "look at it, and commit it");
   }
-  const Comparison comparison = CompareImages(ReadImage(golden), actual);
+  return ReadImage(golden);
+}
+
+void CompareWithGolden(const std::string& chapter, const std::string& name, const Image& golden,
+                       const Image& actual) {
+  INFO("golden image: " << GoldenFile(chapter, name));
+  const Comparison comparison = CompareImages(golden, actual);
   const fs::path output = CGFS_TEST_OUTPUT_DIR;
   const fs::path folder = output / chapter;
   const fs::path actual_file = folder / (name + ".png");
@@ -76,6 +83,21 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
     UpdateReport(output);
   }
   SUCCEED(Describe(comparison, actual.Width(), actual.Height()));
+}
+
+}  // namespace
+
+void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& figures,
+                        const std::string& name) {
+  const Image golden = ReadGolden(chapter, name);
+  const Figure& figure = FindFigure(figures, name);
+  CompareWithGolden(chapter, name, golden,
+                    RenderFigure(figure, golden.Width(), golden.Height()).GetImage());
+}
+
+void CheckImageAgainstGolden(const std::string& chapter, const std::string& name,
+                             const Image& actual) {
+  CompareWithGolden(chapter, name, ReadGolden(chapter, name), actual);
 }
 
 }  // namespace cgfs::test

@@ -9,7 +9,8 @@
 
 namespace cgfs::test {
 
-// The size every golden image is rendered at.
+// The size golden images are rendered at: the programs' default size, which every
+// chapter keeps but the bonus business card (512x512, the card's own size).
 inline constexpr int kGoldenWidth = 600;
 inline constexpr int kGoldenHeight = 600;
 
@@ -22,11 +23,15 @@ Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& 
 // tests/golden/<chapter>/<name>.png
 std::string GoldenFile(const std::string& chapter, const std::string& name);
 
-// Draws the named figure at 600x600 and compares it with
-// tests/golden/<chapter>/<name>.png under the project's tolerance. On failure the
-// actual and a difference image are written to <build>/test-output/<chapter>/
-// and their paths are printed with the numbers.
+// Draws the named figure at the size of its golden image (600x600 but for the
+// business card) and compares it with tests/golden/<chapter>/<name>.png under the
+// project's tolerance. On failure the actual and a difference image are written to
+// <build>/test-output/<chapter>/ and their paths are printed with the numbers.
 void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& figures,
                         const std::string& name);
+
+// The same for an image the test has drawn already.
+void CheckImageAgainstGolden(const std::string& chapter, const std::string& name,
+                             const Image& actual);
 
 }  // namespace cgfs::test

@@ -1,0 +1,25 @@
+// The card's camera: where the eye is, where it looks, and its lens.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+// The card's image is 512 × 512; other sizes see the same view (the pixel step
+// scales with the width).
+inline constexpr int kCardSide = 512;
+// The eye, a little above the letters' middle, in front of them and to their right.
+inline constexpr glm::dvec3 kEye{17, 16, 8};
+// Every lens sample aims at the point this far along its pixel's ray (in units of
+// the pixel ray (a·x + b·y + c), whose length is about 1): the focal distance.
+inline constexpr double kFocus = 16;
+
+struct Camera {
+  glm::dvec3 g;  // the viewing direction, normalize(−6, −16, 0): level, towards the letters
+  glm::dvec3 a;  // one pixel along the image's x: towards the image's left (+x in the world)
+  glm::dvec3 b;  // one pixel along the image's y: up, (0, 0, 0.002)
+  glm::dvec3 c;  // from the eye to the pixel (0, 0) corner: the ray of pixel (x, y) is a·x + b·y + c
+  double aperture = 0;  // the lens's side in pixel steps: a square of ±0.099 units
+};
+
+// The card's vectors for an image of width × height: at 512 × 512, a = normalize(up × g)
+// · 0.002, b = normalize(g × a) · 0.002, c = −256·(a + b) + g, aperture 99.
+Camera MakeCamera(int width, int height);

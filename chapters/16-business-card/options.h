@@ -1,0 +1,9 @@
+// The chapter's own command-line options: how many samples per pixel, the random
+// seed, and which optimisations to use (see render.h and optimizations.h).
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+void AddChapterOptions(CLI::App& app);

@@ -1,0 +1,118 @@
+// The whole card: its pixels, its statistics, its golden image, and its speed-ups.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "cgfs/canvas.h"
+#include "golden.h"
+#include "render.h"
+#include "scenes.h"
+
+using cgfs::Rgb8;
+
+namespace {
+
+cgfs::Canvas RenderCard(int width, int height, const RenderSettings& settings) {
+  cgfs::Canvas canvas(width, height);
+  Render(canvas, settings);
+  return canvas;
+}
+
+}  // namespace
+
+TEST_CASE("RenderPixel: 13 + 224 x the mean sample, truncated", "[render]") {
+  // The top left pixel, x = 511, y = 511, sees only sky. Its rays leave the eye close to
+  // its middle ray, whose sky is 0.7 (1 - d.z)^4 in red.
+  const Camera camera = MakeCamera(512, 512);
+  const glm::dvec3 middle =
+      glm::normalize(camera.a * 511.5 + camera.b * 511.5 + camera.c);
+  const double red = 13 + 224 * 0.7 * std::pow(1 - middle.z, 4);
+  RenderSettings settings;
+  const glm::ivec3 pixel = RenderPixel(camera, 511, 511, settings);
+  CHECK(std::abs(pixel.r - red) <= 2);
+  // The same pixel is drawn the same however often, and fewer samples stay close.
+  CHECK(RenderPixel(camera, 511, 511, settings) == pixel);
+  settings.samples = 4;
+  CHECK(std::abs(RenderPixel(camera, 511, 511, settings).r - red) <= 2);
+}
+
+TEST_CASE("the card at 512 x 512 with 64 samples: its statistics and its golden image",
+          "[render][golden]") {
+  RenderSettings settings;  // 64 samples, seed 1
+  settings.optimizations = AllOptimizations();
+  const cgfs::Canvas card = RenderCard(512, 512, settings);
+
+  // The original card, with the C library's rand(), gives a mean of (80.0, 62.2, 75.0),
+  // the brightest channel 232 and a white tile (199, 199, 199) at the bottom centre.
+  double sum[3] = {0, 0, 0};
+  int brightest = 0, darkest = 255;
+  for (int y = -256; y < 256; ++y) {
+    for (int x = -256; x < 256; ++x) {
+      const Rgb8 pixel = card.GetPixel(x, y);
+      const int channels[3] = {pixel.r, pixel.g, pixel.b};
+      for (int c = 0; c < 3; ++c) {
+        sum[c] += channels[c];
+        brightest = std::max(brightest, channels[c]);
+        darkest = std::min(darkest, channels[c]);
+      }
+    }
+  }
+  CHECK(sum[0] / (512 * 512) == Approx(80.0).margin(2));
+  CHECK(sum[1] / (512 * 512) == Approx(62.2).margin(2));
+  CHECK(sum[2] / (512 * 512) == Approx(75.0).margin(2));
+  CHECK(brightest <= 235);
+  CHECK(darkest == 13);  // the base: straight-up sky is black
+  const Rgb8 bottom = card.GetPixel(-1, -256);  // the card's x = 256, y = 0
+  CHECK(std::abs(bottom.r - 199) <= 2);
+  CHECK(bottom.r == bottom.g);
+  CHECK(bottom.g == bottom.b);
+
+  cgfs::test::CheckImageAgainstGolden(CGFS_CHAPTER, "business-card", card.GetImage());
+}
+
+TEST_CASE("every figure matches its golden image", "[golden]") {
+  for (const cgfs::Figure& figure : Figures()) {
+    if (figure.name != "business-card") {  // drawn and checked above
+      DYNAMIC_SECTION(figure.name) {
+        cgfs::test::CheckAgainstGolden(CGFS_CHAPTER, Figures(), figure.name);
+      }
+    }
+  }
+}
+
+TEST_CASE("threads and the bound leave every pixel as it was", "[render][optimizations]") {
+  RenderSettings settings;
+  settings.samples = 8;
+  const cgfs::Canvas plain = RenderCard(128, 128, settings);
+  for (const char* list : {"bound", "threads", "all"}) {
+    for (int threads : {2, 7}) {
+      INFO(list << ", " << threads << " threads");
+      settings.optimizations = ParseOptimizations(list);
+      if (settings.optimizations.threads > 1) {
+        settings.optimizations.threads = threads;
+      }
+      CHECK(RenderCard(128, 128, settings).GetImage() == plain.GetImage());
+    }
+  }
+}
+
+TEST_CASE("another seed gives other noise around the same picture", "[render]") {
+  RenderSettings settings;
+  settings.samples = 8;
+  settings.optimizations = AllOptimizations();
+  const cgfs::Canvas one = RenderCard(128, 128, settings);
+  settings.seed = 2;
+  const cgfs::Canvas two = RenderCard(128, 128, settings);
+  int changed = 0, far = 0;
+  for (int y = -64; y < 64; ++y) {
+    for (int x = -64; x < 64; ++x) {
+      const int difference = std::abs(one.GetPixel(x, y).r - two.GetPixel(x, y).r);
+      changed += difference > 0 ? 1 : 0;
+      far += difference > 60 ? 1 : 0;
+    }
+  }
+  CHECK(changed > 128 * 128 / 4);
+  CHECK(far < 128 * 128 / 100);
+}
