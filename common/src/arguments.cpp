@@ -2,8 +2,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <utility>
 
 #include "cgfs/error.h"
@@ -33,7 +35,20 @@ void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
 
 void AddIntOption(CLI::App& app, const std::string& name, int& value, const std::string& help,
                   const std::string& type_name, int min, int max) {
-  app.add_option("--" + name, value, help)->type_name(type_name)->check(CLI::Range(min, max));
+  app.add_option("--" + name, value, help)
+      ->type_name(type_name)
+      ->check([min, max](const std::string& text) -> std::string {
+        long long number = 0;
+        const char* last = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), last, number);
+        if (text.empty() || error == std::errc::invalid_argument || stop != last) {
+          return "'" + text + "' is not a whole number";
+        }
+        if (error == std::errc::result_out_of_range || number < min || number > max) {
+          return "must be " + std::to_string(min) + ".." + std::to_string(max) + ", not " + text;
+        }
+        return "";
+      });
 }
 
 void SetDefaultSize(CLI::App& app, const std::string& size) {

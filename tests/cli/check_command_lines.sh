@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # End-to-end checks of the command lines: exit statuses, one-line errors, and no
 # file written on bad input. Usage:
-#   check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE [CHAPTER_5_PROGRAM [CHAPTER_14_PROGRAM]]
+#   check_command_lines.sh CHAPTER_PROGRAM CGFS_COMPARE [CHAPTER_5_PROGRAM [CHAPTER_14_PROGRAM
+#     [CHAPTER_16_PROGRAM]]]
 set -u
-program=$1 compare=$2 chapter5=${3:-} chapter14=${4:-}
+program=$1 compare=$2 chapter5=${3:-} chapter14=${4:-} chapter16=${5:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -84,6 +85,41 @@ if [ -n "$chapter14" ]; then
   "$program" --output "$work/wide" --figure fig-2-11 --size 2100x8 >/dev/null
   expect 2 "chapter 14: --texture too large" "$chapter14" \
     --texture "$work/wide/fig-2-11.png" --output "$work/bad"
+fi
+
+# The business card's own options (chapters/16-business-card/options.h), and its
+# size: 512x512 unless --size says otherwise.
+if [ -n "$chapter16" ]; then
+  expect 0 "chapter 16: --samples 2 --seed 7, plain" "$chapter16" --output "$work/ch16" \
+    --size 32x32 --figure business-card --samples 2 --seed 7 --optimizations none
+  expect 0 "chapter 16: the same with threads and the bound" "$chapter16" --output "$work/ch16-all" \
+    --size 32x32 --figure business-card --samples 2 --seed 7 --optimizations threads,bound \
+    --threads 3
+  if cmp -s "$work/ch16/business-card.png" "$work/ch16-all/business-card.png"; then
+    echo "ok: chapter 16: the optimisations change no pixel"
+  else
+    echo "FAIL: chapter 16: the optimisations changed the image"
+    failures=$((failures + 1))
+  fi
+  if "$chapter16" --help | grep -q -- "--size WxH.*(default 512x512)"; then
+    echo "ok: chapter 16: --help gives the card's size as the default"
+  else
+    echo "FAIL: chapter 16: --help does not give 512x512 as the default size"
+    failures=$((failures + 1))
+  fi
+  "$chapter16" --output "$work/ch16-size" --figure business-card-1-sample >"$work/ch16-size.txt"
+  if grep -q "(512x512, rendered" "$work/ch16-size.txt"; then
+    echo "ok: chapter 16: 512x512 without --size"
+  else
+    echo "FAIL: chapter 16: not 512x512 without --size: $(cat "$work/ch16-size.txt")"
+    failures=$((failures + 1))
+  fi
+  expect 2 "chapter 16: zero samples" "$chapter16" --samples 0 --output "$work/bad"
+  expect 2 "chapter 16: too many samples" "$chapter16" --samples 5000 --output "$work/bad"
+  expect 2 "chapter 16: samples not a number" "$chapter16" --samples lots --output "$work/bad"
+  expect 2 "chapter 16: a negative seed" "$chapter16" --seed -1 --output "$work/bad"
+  expect 2 "chapter 16: a seed too large" "$chapter16" --seed 99999999999 --output "$work/bad"
+  expect 2 "chapter 16: unknown optimisation" "$chapter16" --optimizations bvh --output "$work/bad"
 fi
 
 expect 2 "unknown option" "$program" --colour red --output "$work/bad"
