@@ -33,10 +33,10 @@ const std::vector<LetterBound>& LetterBounds() {
         continue;
       }
       if (!in_letter) {
-        found.push_back({{spheres[static_cast<std::size_t>(next)],
-                          spheres[static_cast<std::size_t>(next)]},
-                         next,
-                         0});
+        found.push_back(
+            {{spheres[static_cast<std::size_t>(next)], spheres[static_cast<std::size_t>(next)]},
+             next,
+             0});
         in_letter = true;
       }
       LetterBound& letter = found.back();

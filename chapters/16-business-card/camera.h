@@ -16,7 +16,8 @@ struct Camera {
   glm::dvec3 g;  // the viewing direction, normalize(−6, −16, 0): level, towards the letters
   glm::dvec3 a;  // one pixel along the image's x: towards the image's left (+x in the world)
   glm::dvec3 b;  // one pixel along the image's y: up, (0, 0, 0.002)
-  glm::dvec3 c;  // from the eye to the pixel (0, 0) corner: the ray of pixel (x, y) is a·x + b·y + c
+  // From the eye to the corner of pixel (0, 0): pixel (x, y) looks along a·x + b·y + c.
+  glm::dvec3 c;
   double aperture = 0;  // the lens's side in pixel steps: a square of ±0.099 units
 };
 

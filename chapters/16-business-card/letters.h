@@ -12,8 +12,8 @@
 // (k = 0..18). Bit k of row j set means a unit sphere centred at (k, 0, j + 4).
 // Seen from the card's camera, a larger k is further left, so the letters read
 // "aek" from left to right (chapters/16-business-card/README.md draws the bitmap).
-inline constexpr std::array<std::uint32_t, 9> kLetterRows = {
-    247570, 280596, 280600, 249748, 18578, 18577, 231184, 16, 16};
+inline constexpr std::array<std::uint32_t, 9> kLetterRows = {247570, 280596, 280600, 249748, 18578,
+                                                             18577,  231184, 16,     16};
 
 inline constexpr int kLetterColumns = 19;
 inline constexpr int kLetterSphereCount = 49;  // the bits set in kLetterRows

@@ -32,8 +32,7 @@ void TraceSphere(const glm::dvec3& centre, const glm::dvec3& o, const glm::dvec3
 
 }  // namespace
 
-HitType Trace(const glm::dvec3& o, const glm::dvec3& d, double& t, glm::dvec3& n,
-              bool bounded) {
+HitType Trace(const glm::dvec3& o, const glm::dvec3& d, double& t, glm::dvec3& n, bool bounded) {
   t = 1e9;
   HitType m = HitType::Sky;
 

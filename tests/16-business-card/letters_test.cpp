@@ -75,11 +75,11 @@ TEST_CASE("the bound: one box per letter, a, e and k, holding every sphere once"
 
 TEST_CASE("MayHit: the slab test of a ray against a box", "[bound]") {
   const Box box{{0, 0, 0}, {1, 1, 1}};
-  CHECK(MayHit(box, {-1, 0.5, 0.5}, {1, 0, 0}, 1e9));        // straight through
-  CHECK_FALSE(MayHit(box, {-1, 2, 0.5}, {1, 0, 0}, 1e9));    // beside it
-  CHECK_FALSE(MayHit(box, {2, 0.5, 0.5}, {1, 0, 0}, 1e9));   // behind the ray
-  CHECK_FALSE(MayHit(box, {-5, 0.5, 0.5}, {1, 0, 0}, 2));    // beyond the nearest hit so far
-  CHECK(MayHit(box, {0.5, 0.5, 0.5}, {0, 0, 1}, 1e9));       // from inside
+  CHECK(MayHit(box, {-1, 0.5, 0.5}, {1, 0, 0}, 1e9));           // straight through
+  CHECK_FALSE(MayHit(box, {-1, 2, 0.5}, {1, 0, 0}, 1e9));       // beside it
+  CHECK_FALSE(MayHit(box, {2, 0.5, 0.5}, {1, 0, 0}, 1e9));      // behind the ray
+  CHECK_FALSE(MayHit(box, {-5, 0.5, 0.5}, {1, 0, 0}, 2));       // beyond the nearest hit so far
+  CHECK(MayHit(box, {0.5, 0.5, 0.5}, {0, 0, 1}, 1e9));          // from inside
   CHECK_FALSE(MayHit(box, {0.5, 0.5, 1.005}, {0, 0, 1}, 1e9));  // leaving it: nothing past 0.01
   const glm::dvec3 diagonal = glm::normalize(glm::dvec3(1, 1, 1));
   CHECK(MayHit(box, {-1, -1, -1}, diagonal, 1e9));

@@ -26,8 +26,7 @@ TEST_CASE("RenderPixel: 13 + 224 x the mean sample, truncated", "[render]") {
   // The top left pixel, x = 511, y = 511, sees only sky. Its rays leave the eye close to
   // its middle ray, whose sky is 0.7 (1 - d.z)^4 in red.
   const Camera camera = MakeCamera(512, 512);
-  const glm::dvec3 middle =
-      glm::normalize(camera.a * 511.5 + camera.b * 511.5 + camera.c);
+  const glm::dvec3 middle = glm::normalize(camera.a * 511.5 + camera.b * 511.5 + camera.c);
   const double red = 13 + 224 * 0.7 * std::pow(1 - middle.z, 4);
   RenderSettings settings;
   const glm::ivec3 pixel = RenderPixel(camera, 511, 511, settings);
@@ -63,7 +62,7 @@ TEST_CASE("the card at 512 x 512 with 64 samples: its statistics and its golden 
   CHECK(sum[1] / (512 * 512) == Approx(62.2).margin(2));
   CHECK(sum[2] / (512 * 512) == Approx(75.0).margin(2));
   CHECK(brightest <= 235);
-  CHECK(darkest == 13);  // the base: straight-up sky is black
+  CHECK(darkest == 13);                         // the base: straight-up sky is black
   const Rgb8 bottom = card.GetPixel(-1, -256);  // the card's x = 256, y = 0
   CHECK(std::abs(bottom.r - 199) <= 2);
   CHECK(bottom.r == bottom.g);

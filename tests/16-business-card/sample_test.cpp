@@ -26,8 +26,7 @@ TEST_CASE("Sample: a ray into the sky is the sky's colour, whatever the generato
   CheckNear(Sample({0, 50, 8}, {1, 0, 0}, random), {0.7, 0.6, 1.0});
 }
 
-TEST_CASE("Sample: the floor in the full shadow of a sphere has only its 0.1 ambient",
-          "[sample]") {
+TEST_CASE("Sample: the floor in the full shadow of a sphere has only its 0.1 ambient", "[sample]") {
   // (18.5, -9.5, 0) lies on the line from the light's middle (9.5, 9.5, 16) through the
   // sphere (14, 0, 8), twice as far: from there the sphere (radius 4.3°) hides the
   // whole light (1.1° each way). The tile: ceil(3.7) + ceil(-1.9) = 4 - 1, odd: red.
@@ -59,6 +58,5 @@ TEST_CASE("Sample: a sphere is a mirror, and the reflections stop at the limit",
   CheckNear(Sample({14, -5, 8}, {0, 1, 0}, random), {0.35, 0.3, 0.5});
   // At the limit the reflected ray is not followed: nothing but the (absent) highlight.
   CheckNear(Sample({14, -5, 8}, {0, 1, 0}, random, false, kMaxReflections), {0, 0, 0});
-  CheckNear(Sample({14, -5, 8}, {0, 1, 0}, random, false, kMaxReflections - 1),
-            {0.35, 0.3, 0.5});
+  CheckNear(Sample({14, -5, 8}, {0, 1, 0}, random, false, kMaxReflections - 1), {0.35, 0.3, 0.5});
 }

@@ -61,10 +61,9 @@ TEST_CASE("Trace finds the same hit with the bound as without, for rays of every
   std::uniform_real_distribution<double> unit(-1, 1);
   int hits[3] = {0, 0, 0};
   for (int i = 0; i < 20000; ++i) {
-    const glm::dvec3 origin = i % 2 == 0
-                                  ? glm::dvec3(17 + unit(engine), 16 + unit(engine), 8 + unit(engine))
-                                  : glm::dvec3(9 + 11 * unit(engine), 1.5 * unit(engine),
-                                               8 + 6 * unit(engine));
+    const glm::dvec3 origin =
+        i % 2 == 0 ? glm::dvec3(17 + unit(engine), 16 + unit(engine), 8 + unit(engine))
+                   : glm::dvec3(9 + 11 * unit(engine), 1.5 * unit(engine), 8 + 6 * unit(engine));
     glm::dvec3 direction(unit(engine), unit(engine), unit(engine));
     if (glm::length(direction) < 0.1) {
       continue;

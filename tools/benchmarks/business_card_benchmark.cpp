@@ -13,8 +13,7 @@
 
 namespace {
 
-void RenderCard(benchmark::State& state, const std::string& optimizations, int side,
-                int samples) {
+void RenderCard(benchmark::State& state, const std::string& optimizations, int side, int samples) {
   RenderSettings settings;
   settings.samples = samples;
   settings.optimizations = ParseOptimizations(optimizations);
