@@ -33,7 +33,8 @@ CardColor Sample(const glm::dvec3& o, const glm::dvec3& d, Random& random, bool 
   const double light_x = kLightX + random.Rand();
   const double light_y = kLightY + random.Rand();
   const glm::dvec3 l = glm::normalize(glm::dvec3(light_x, light_y, kLightZ) + h * -1.0);
-  // The mirror direction, chapter 4's R = 2N⟨N, D⟩ − D for the incoming ray d.
+  // The mirror direction: chapter 4's ReflectRay for the ray back towards the eye, −d,
+  // which is d − 2⟨n, d⟩n.
   const glm::dvec3 r = d + n * (glm::dot(n, d) * -2);
 
   // Lambert's cosine, 0 if the surface faces away from the light or anything is in
