@@ -8,43 +8,21 @@
 #include "letters.h"
 #include "trace.h"
 
-namespace {
-
-bool ColumnIsEmpty(int k) {
-  for (int j = 0; j < static_cast<int>(kLetterRows.size()); ++j) {
-    if (HasSphere(k, j)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
-
 const std::vector<LetterBound>& LetterBounds() {
   static const std::vector<LetterBound> letters = [] {
-    std::vector<LetterBound> found;
+    // LetterSpheres() goes column by column from k = 18 down, so a letter's spheres
+    // follow one another, and a new letter starts where a column was skipped.
     const auto& spheres = LetterSpheres();
-    int next = 0;  // the next sphere of LetterSpheres(), which go from column 18 down
-    bool in_letter = false;
-    for (int k = kLetterColumns - 1; k >= 0; --k) {
-      if (ColumnIsEmpty(k)) {
-        in_letter = false;
-        continue;
-      }
-      if (!in_letter) {
-        found.push_back(
-            {{spheres[static_cast<std::size_t>(next)], spheres[static_cast<std::size_t>(next)]},
-             next,
-             0});
-        in_letter = true;
+    std::vector<LetterBound> found;
+    for (int i = 0; i < kLetterSphereCount; ++i) {
+      const glm::dvec3& centre = spheres[static_cast<std::size_t>(i)];
+      if (found.empty() || spheres[static_cast<std::size_t>(i - 1)].x - centre.x > 1) {
+        found.push_back({{centre, centre}, i, 0});
       }
       LetterBound& letter = found.back();
-      for (; next < kLetterSphereCount && spheres[static_cast<std::size_t>(next)].x == k; ++next) {
-        letter.box.min = glm::min(letter.box.min, spheres[static_cast<std::size_t>(next)]);
-        letter.box.max = glm::max(letter.box.max, spheres[static_cast<std::size_t>(next)]);
-        ++letter.count;
-      }
+      letter.box.min = glm::min(letter.box.min, centre);
+      letter.box.max = glm::max(letter.box.max, centre);
+      ++letter.count;
     }
     const glm::dvec3 reach(1 + kBoundMargin);  // the unit radius, and the margin
     for (LetterBound& letter : found) {

@@ -14,25 +14,26 @@ std::uint32_t& ChosenSeed() {
   return seed;
 }
 
+namespace {
+
+// The card with `samples` per pixel, and the seed and optimisations of the command line.
+void DrawCard(cgfs::Canvas& canvas, int samples) {
+  RenderSettings settings;
+  settings.samples = samples;
+  settings.seed = ChosenSeed();
+  settings.optimizations = ChosenOptimizations();
+  Render(canvas, settings);
+}
+
+}  // namespace
+
 std::vector<cgfs::Figure> Figures() {
   return {
       {"business-card",
        "the card's image: \"aek\" in mirror spheres, " + std::to_string(ChosenSamples()) +
            " samples per pixel",
-       [](cgfs::Canvas& canvas) {
-         RenderSettings settings;
-         settings.samples = ChosenSamples();
-         settings.seed = ChosenSeed();
-         settings.optimizations = ChosenOptimizations();
-         Render(canvas, settings);
-       }},
+       [](cgfs::Canvas& canvas) { DrawCard(canvas, ChosenSamples()); }},
       {"business-card-1-sample", "one sample per pixel: why the card takes 64",
-       [](cgfs::Canvas& canvas) {
-         RenderSettings settings;
-         settings.samples = 1;
-         settings.seed = ChosenSeed();
-         settings.optimizations = ChosenOptimizations();
-         Render(canvas, settings);
-       }},
+       [](cgfs::Canvas& canvas) { DrawCard(canvas, 1); }},
   };
 }
