@@ -20,51 +20,6 @@ void RenderObject(const std::vector<Vec3>& vertices, const std::vector<Triangle>
   }
 }
 
-// Listing 10-4. Rotation and scale act about the model's origin, so translation comes last.
-Vec3 ApplyTransform(const Vec3& vertex, const Transform& transform) {
-  const Vec3 scaled = vertex * transform.scale;
-  const Vec3 rotated = Vec3(transform.rotation * glm::dvec4(scaled, 0.0));
-  const Vec3 translated = rotated + transform.translation;
-  return translated;
-}
-
-// Listing 10-3.
-void RenderInstance(const Instance& instance, Canvas& canvas, const Viewport& viewport) {
-  std::vector<Point> projected;
-  const Model& model = *instance.model;
-  for (const Vec3& V : model.vertices) {
-    const Vec3 V_transformed = ApplyTransform(V, instance.transform);
-    projected.push_back(ProjectVertex(V_transformed, canvas, viewport));
-  }
-  for (const Triangle& T : model.triangles) {
-    RenderTriangle(T, projected, canvas);
-  }
-}
-
-// "The Transform Matrix": M_model = I_T * I_R * I_S, so the scale acts first.
-glm::dmat4 MakeTransformMatrix(const Transform& transform) {
-  return MakeTranslationMatrix(transform.translation) * transform.rotation *
-         MakeScalingMatrix(transform.scale);
-}
-
-// "The Transform Matrix": M_camera = C_R^-1 * C_T^-1.
-glm::dmat4 MakeCameraMatrix(const Vec3& position, const glm::dmat4& orientation) {
-  return glm::transpose(orientation) * MakeTranslationMatrix(-position);
-}
-
-// Listing 10-5. Vertices are points: w = 1.
-void RenderModel(const Model& model, const glm::dmat4& transform, Canvas& canvas,
-                 const Viewport& viewport) {
-  std::vector<Point> projected;
-  for (const Vec3& V : model.vertices) {
-    projected.push_back(
-        ProjectVertex(cgfs::ToCartesian(transform * glm::dvec4(V, 1.0)), canvas, viewport));
-  }
-  for (const Triangle& T : model.triangles) {
-    RenderTriangle(T, projected, canvas);
-  }
-}
-
 // "The Clipping Pipeline": model space to camera space with one matrix per
 // instance, then clipping, then projection. Clipping happens in camera space, where
 // the clipping volume does not depend on the camera. What survives lies beyond the

@@ -31,16 +31,6 @@ const Model& CubeModel() {
   return cube;
 }
 
-// Figure 10-3: two instances of the cube, the camera at the origin.
-Scene SceneTwoCubes() {
-  Scene scene;
-  scene.instances = {
-      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
-  };
-  return scene;
-}
-
 // Figure 10-10: the instances scaled and rotated, seen from a camera moved back
 // and to the left and turned 30 degrees to the right. Also the scene of
 // chapters 11 to 14.

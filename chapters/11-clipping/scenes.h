@@ -5,6 +5,7 @@
 
 #include "cgfs/figure.h"
 #include "clipping.h"
+#include "scene_rendering.h"
 
 inline constexpr char kChapterDescription[] =
     "Chapter 11, Clipping: the clipping volume, bounding spheres, splitting triangles.";
@@ -13,8 +14,7 @@ inline constexpr char kChapterDescription[] =
 // triangles of one colour, wound so that (V1 - V0) x (V2 - V0) points outwards.
 const Model& CubeModel();
 
-// The scenes of Figures 10-3 and 10-10.
-Scene SceneTwoCubes();
+// The scene of Figure 10-10.
 Scene SceneTransformedCubes();
 
 // The scene of Figure 10-10 with a third cube, behind the camera.

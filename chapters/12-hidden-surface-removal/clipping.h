@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene_rendering.h"
+#include "scene.h"
 
 // "The Clipping Volume": the plane of points P with <N, P> + D = 0. N has unit
 // length and points into the volume, so <N, P> + D is P's signed distance.

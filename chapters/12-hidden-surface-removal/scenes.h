@@ -5,6 +5,7 @@
 
 #include "cgfs/figure.h"
 #include "clipping.h"
+#include "scene_rendering.h"
 
 inline constexpr char kChapterDescription[] =
     "Chapter 12, Hidden Surface Removal: solid triangles, the painter's algorithm, the depth "
@@ -17,8 +18,7 @@ const Model& CubeModel();
 // The cube without its blue face (z = -1): an open box, whose inside can be seen.
 const Model& OpenBoxModel();
 
-// The scenes of Figures 10-3 and 10-10.
-Scene SceneTwoCubes();
+// The scene of Figure 10-10.
 Scene SceneTransformedCubes();
 
 // Four squares one behind the other, listed nearest first.

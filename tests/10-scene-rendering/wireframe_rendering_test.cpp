@@ -1,5 +1,5 @@
-// Listings 10-3 and 10-5 draw the same wireframes. Chapter 11 keeps them and runs
-// this test too; chapter 12 draws filled triangles and tests that with its own.
+// Listings 10-3 and 10-5 draw the same wireframes. Chapter 10 only: from chapter 11 on,
+// RenderScene clips what it draws, and Listing 10-3 has had its day.
 #include <catch2/catch.hpp>
 
 #include "scenes.h"

@@ -52,18 +52,6 @@ TEST_CASE("figure 12-1: in model order the back faces paint over the front", "[f
   CHECK(model_order.GetPixel(0, 0) == kBackground8);
 }
 
-TEST_CASE("RenderInstance, filled, draws what RenderScene draws in model order", "[render]") {
-  // Listing 10-3 with DrawFilledTriangle is Figure 12-1's method, when nothing is clipped.
-  const Scene scene = SceneTwoCubes();
-  Canvas by_instance(600, 600);
-  for (const Instance& I : scene.instances) {
-    RenderInstance(I, by_instance, scene.viewport);
-  }
-  Canvas by_scene(600, 600);
-  RenderScene(scene, by_scene, {.draw_order = DrawOrder::kModelOrder, .cull_back_faces = false});
-  CHECK(by_instance.GetImage() == by_scene.GetImage());
-}
-
 TEST_CASE("culling the back faces changes nothing but a few pixels on silhouettes", "[figures]") {
   // Where a back face meets a front face along a silhouette, rounding gives the back
   // face a pixel here and there; culled, it cannot.
