@@ -1,6 +1,7 @@
 #include "depth_buffer.h"
 
 #include <limits>
+#include <stdexcept>
 
 namespace {
 
@@ -11,34 +12,30 @@ double InitialDepth(DepthValue value) {
 }  // namespace
 
 DepthBuffer::DepthBuffer(const Canvas& canvas, DepthValue value)
-    : canvas_(&canvas),
-      value_(value),
-      depths_(static_cast<std::size_t>(canvas.Width()) * static_cast<std::size_t>(canvas.Height()),
-              InitialDepth(value)) {}
+    : value_(value), depths_(canvas, InitialDepth(value)) {}
 
 double DepthBuffer::DepthOf(double z) const {
   return value_ == DepthValue::kZ ? z : 1 / z;
 }
 
 bool DepthBuffer::TestAndSet(int x, int y, double depth) {
-  const std::optional<cgfs::ScreenPoint> screen = canvas_->ToScreen(x, y);
-  if (!screen) {
+  double* stored = depths_.Find(x, y);
+  if (!stored) {
     return false;
   }
-  double& stored =
-      depths_[static_cast<std::size_t>(screen->row) * static_cast<std::size_t>(canvas_->Width()) +
-              static_cast<std::size_t>(screen->column)];
-  const bool closer = value_ == DepthValue::kZ ? depth < stored : depth > stored;
+  const bool closer = value_ == DepthValue::kZ ? depth < *stored : depth > *stored;
   if (closer) {
-    stored = depth;
+    *stored = depth;
   }
   return closer;
 }
 
 double DepthBuffer::At(int x, int y) const {
-  const cgfs::ScreenPoint screen = canvas_->ToScreen(x, y).value();
-  return depths_[static_cast<std::size_t>(screen.row) * static_cast<std::size_t>(canvas_->Width()) +
-                 static_cast<std::size_t>(screen.column)];
+  const double* stored = depths_.Find(x, y);
+  if (!stored) {
+    throw std::out_of_range("DepthBuffer::At: the pixel is off the canvas");
+  }
+  return *stored;
 }
 
 // "Depth Buffering": compute v01, v12 and v02, and join v01 and v12 into v012.

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "canvas_grid.h"
 #include "triangles.h"
 
 // What the depth buffer stores for a point at camera-space depth z. The book tries
@@ -38,9 +39,8 @@ class DepthBuffer {
   double At(int x, int y) const;
 
  private:
-  const Canvas* canvas_;
   DepthValue value_;
-  std::vector<double> depths_;
+  CanvasGrid<double> depths_;
 };
 
 // "Depth Buffering": an attribute of a triangle's vertices interpolated along its

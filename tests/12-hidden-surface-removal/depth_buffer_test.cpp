@@ -68,23 +68,27 @@ TEST_CASE("EdgeInterpolate: the long side and the two short sides joined", "[dep
 }
 
 TEST_CASE("z is not linear on the canvas, 1/z is: the book's worked example", "[depth]") {
-  // A = (-1, 0, 2), B = (1, 0, 10), their midpoint M = (0, 0, 6), d = 1.
+  // A = (-1, 0, 2), B = (1, 0, 10), their midpoint M = (0, 0, 6), d = 1: A'x = -0.5,
+  // B'x = 0.1 and M'x = 0 on the viewport, 600 pixels wide.
   const Canvas canvas(600, 600);
   const Viewport viewport;
-  const Point A = ProjectVertex({-1, 0, 2}, canvas, viewport);
-  const Point B = ProjectVertex({1, 0, 10}, canvas, viewport);
-  const Point M = ProjectVertex({0, 0, 6}, canvas, viewport);
-  // A'x = -0.5, B'x = 0.1, M'x = 0 on the viewport, 600 pixels wide.
-  CHECK(A.x == -300);
-  CHECK(B.x == 60);
-  CHECK(M.x == 0);
-  // z interpolated linearly from A' to B' is wrong at M': 8.6667 instead of 6.
-  const std::vector<double> z = Interpolate(A.x, 2, B.x, 10);
-  CHECK(z[M.x - A.x] == Approx(8.666667));
-  // 1/z interpolated linearly is right: 0.166667, and 1/0.166667 = 6.
-  const std::vector<double> inv_z = Interpolate(A.x, 1.0 / 2, B.x, 1.0 / 10);
-  CHECK(inv_z[M.x - A.x] == Approx(0.166667));
-  CHECK(1 / inv_z[M.x - A.x] == Approx(6));
+  const Vec3 A(-1, 0, 2), B(1, 0, 10), C(-1, 0.5, 2);
+  CHECK(ProjectVertex(A, canvas, viewport) == Point{-300, 0});
+  CHECK(ProjectVertex(B, canvas, viewport) == Point{60, 0});
+  CHECK(ProjectVertex({0, 0, 6}, canvas, viewport) == Point{0, 0});
+  // A triangle whose bottom edge is AB, drawn into each kind of buffer: at M' the
+  // z buffer holds 8.6667 (wrong), the 1/z buffer 0.166667, which is 1/6 (right).
+  const auto stored_at_M = [&](DepthValue value) {
+    Canvas drawn(600, 600);
+    DepthBuffer buffer(drawn, value);
+    DrawFilledTriangle(ProjectVertex(A, drawn, viewport), ProjectVertex(B, drawn, viewport),
+                       ProjectVertex(C, drawn, viewport), A.z, B.z, C.z, cgfs::kRed, drawn,
+                       buffer);
+    return buffer.At(0, 0);
+  };
+  CHECK(stored_at_M(DepthValue::kZ) == Approx(8.666667));
+  CHECK(stored_at_M(DepthValue::kInverseZ) == Approx(0.166667));
+  CHECK(1 / stored_at_M(DepthValue::kInverseZ) == Approx(6));
 }
 
 TEST_CASE("inside a triangle the 1/z buffer holds the plane's 1/z, the z buffer does not",

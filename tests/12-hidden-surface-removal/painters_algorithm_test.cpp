@@ -2,8 +2,6 @@
 // 13 to 15 keep them and run these tests too; the figures are in figures_test.cpp.
 #include <catch2/catch.hpp>
 
-#include <cmath>
-
 #include "painters_algorithm.h"
 #include "scenes.h"
 
@@ -48,14 +46,4 @@ TEST_CASE("CollectTriangles: every triangle of every instance, in camera space",
   CHECK(triangles[2].color == cgfs::kBlue);
   CHECK(triangles[2].vertices[0] == Vec3(2, 2, 9));  // in the triangle's own order
   CHECK(triangles[2].vertices[2] == Vec3(1, 0, 8));
-}
-
-TEST_CASE("the book's sorting costs are n log10 n: 200, 460 and 2322, not 400 and 1840",
-          "[painter]") {
-  // "Painter's Algorithm": twice the triangles take more than twice the time.
-  const auto cost = [](double n) { return n * std::log10(n); };
-  CHECK(cost(100) == Approx(200));
-  CHECK(std::round(cost(200)) == 460);
-  CHECK(std::round(cost(800)) == 2322);
-  CHECK(cost(200) > 2 * cost(100));
 }
