@@ -88,7 +88,7 @@ std::vector<Triangle> ClipTriangle(const Triangle& triangle, const Plane& plane,
     return {};
   }
 
-  // A corner of a triangle: a vertex index, and the normal there (chapter 13).
+  // A corner of a triangle: a vertex index, and the normal there.
   struct Corner {
     int vertex;
     Vec3 normal;

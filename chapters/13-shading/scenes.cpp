@@ -4,8 +4,8 @@
 
 #include "sphere_model.h"
 
-// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
-// each face's two triangles have its normal at every corner.
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
+// two triangles have its normal at every corner.
 const Model& CubeModel() {
   const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
   static const Model cube{
@@ -37,19 +37,8 @@ const Model& CubeModel() {
   return cube;
 }
 
-// Figure 10-3: two instances of the cube, the camera at the origin.
-Scene SceneTwoCubes() {
-  Scene scene;
-  scene.instances = {
-      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
-  };
-  return scene;
-}
-
 // Figure 10-10: the instances scaled and rotated, seen from a camera moved back
-// and to the left and turned 30 degrees to the right. Also the scene of
-// chapters 11 to 14.
+// and to the left and turned 30 degrees to the right.
 Scene SceneTransformedCubes() {
   Scene scene;
   scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
@@ -187,16 +176,16 @@ std::vector<cgfs::Figure> Figures() {
         figures.push_back(
             {BookFigureNumber(shading) + NameOf(shading),
              "the cubes and the sphere, " + NameOf(shading),
-             [shading](Canvas& canvas) { RenderScene(SceneShading(), canvas, {}, shading); }});
+             [shading](Canvas& canvas) { RenderScene(SceneShading(), canvas, shading); }});
       }
     }
   }
-  figures.push_back({"fig-13-7-close-light-gouraud",
-                     "a large face lit from close by, Gouraud: the corners are dim, so all is",
-                     [](Canvas& canvas) {
-                       RenderScene(SceneCloseLight(), canvas, {},
-                                   {ShadingModel::kGouraud, NormalSource::kModel, {}});
-                     }});
+  figures.push_back(
+      {"fig-13-7-close-light-gouraud",
+       "a large face lit from close by, Gouraud: the corners are dim, so all is",
+       [](Canvas& canvas) {
+         RenderScene(SceneCloseLight(), canvas, {ShadingModel::kGouraud, NormalSource::kModel, {}});
+       }});
   figures.push_back({"fig-13-10-close-light-phong",
                      "the same face, Phong: the bright spot nearest the light",
                      [](Canvas& canvas) { RenderScene(SceneCloseLight(), canvas); }});

@@ -5,6 +5,7 @@
 
 #include "cgfs/figure.h"
 #include "clipping.h"
+#include "scene_rendering.h"
 
 inline constexpr char kChapterDescription[] =
     "Chapter 13, Shading: lighting triangles; flat, Gouraud and Phong shading; normals in "
@@ -15,8 +16,7 @@ inline constexpr char kChapterDescription[] =
 // corner's normal is its face's normal.
 const Model& CubeModel();
 
-// The scenes of Figures 10-3 and 10-10.
-Scene SceneTwoCubes();
+// The scene of Figure 10-10.
 Scene SceneTransformedCubes();
 
 // Figures 13-1 to 13-9: Figure 10-10's cubes, a green sphere, and three lights.

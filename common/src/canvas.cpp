@@ -23,20 +23,6 @@ int CheckedSize(int size, const char* what) {
 Canvas::Canvas(int width, int height, Color background)
     : image_(CheckedSize(width, "width"), CheckedSize(height, "height"), ToRgb8(background)) {}
 
-std::optional<ScreenPoint> Canvas::ToScreen(int x, int y) const {
-  const ScreenPoint screen{Width() / 2 + x, Height() / 2 - y - 1};
-  if (!image_.Contains(screen.column, screen.row)) {
-    return std::nullopt;
-  }
-  return screen;
-}
-
-void Canvas::PutPixel(int x, int y, const Color& color) {
-  if (const auto screen = ToScreen(x, y)) {
-    image_.Set(screen->column, screen->row, ToRgb8(color));
-  }
-}
-
 Rgb8 Canvas::GetPixel(int x, int y) const {
   const auto screen = ToScreen(x, y);
   if (!screen) {

@@ -25,22 +25,9 @@ Image::Image(int width, int height, std::vector<std::uint8_t> bytes)
   }
 }
 
-std::size_t Image::Offset(int column, int row) const {
-  return (static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-          static_cast<std::size_t>(column)) *
-         3;
-}
-
 Rgb8 Image::At(int column, int row) const {
   const std::size_t i = Offset(column, row);
   return {bytes_[i], bytes_[i + 1], bytes_[i + 2]};
-}
-
-void Image::Set(int column, int row, Rgb8 value) {
-  const std::size_t i = Offset(column, row);
-  bytes_[i] = value.r;
-  bytes_[i + 1] = value.g;
-  bytes_[i + 2] = value.b;
 }
 
 }  // namespace cgfs

@@ -57,16 +57,6 @@ TEST_CASE("DepthBuffer maps pixels as PutPixel does and ignores pixels off the c
   CHECK_FALSE(buffer.TestAndSet(0, -201, 1));
 }
 
-TEST_CASE("EdgeInterpolate: the long side and the two short sides joined", "[depth]") {
-  const auto [v02, v012] = EdgeInterpolate(0, 0, 2, 2, 4, 0);
-  CHECK(v02 == std::vector<double>{0, 0, 0, 0, 0});
-  CHECK(v012 == std::vector<double>{0, 1, 2, 1, 0});  // the value at y1 once
-  // A flat top: y1 == y2.
-  const auto [w02, w012] = EdgeInterpolate(0, 1, 2, 3, 2, 5);
-  CHECK(w02 == std::vector<double>{1, 3, 5});
-  CHECK(w012 == std::vector<double>{1, 2, 3});
-}
-
 TEST_CASE("z is not linear on the canvas, 1/z is: the book's worked example", "[depth]") {
   // A = (-1, 0, 2), B = (1, 0, 10), their midpoint M = (0, 0, 6), d = 1: A'x = -0.5,
   // B'x = 0.1 and M'x = 0 on the viewport, 600 pixels wide.
@@ -82,8 +72,7 @@ TEST_CASE("z is not linear on the canvas, 1/z is: the book's worked example", "[
     Canvas drawn(600, 600);
     DepthBuffer buffer(drawn, value);
     DrawFilledTriangle(ProjectVertex(A, drawn, viewport), ProjectVertex(B, drawn, viewport),
-                       ProjectVertex(C, drawn, viewport), A.z, B.z, C.z, cgfs::kRed, drawn,
-                       buffer);
+                       ProjectVertex(C, drawn, viewport), A.z, B.z, C.z, cgfs::kRed, drawn, buffer);
     return buffer.At(0, 0);
   };
   CHECK(stored_at_M(DepthValue::kZ) == Approx(8.666667));

@@ -1,5 +1,6 @@
-// "Painter's Algorithm": the sort key and the stable back-to-front order. Chapters
-// 13 to 15 keep them and run these tests too; the figures are in figures_test.cpp.
+// "Painter's Algorithm": the sort key and the stable back-to-front order; the figures
+// are in figures_test.cpp. Chapter 12's alone: from chapter 13 on, the depth buffer
+// has taken the painter's place.
 #include <catch2/catch.hpp>
 
 #include "painters_algorithm.h"

@@ -36,6 +36,13 @@ Shading ShadingOf(ShadingModel model, NormalSource normals, LightingTerms terms)
   return shading;
 }
 
+Surface SurfaceOf(const Color& color, double specular) {
+  Surface surface;
+  surface.color = color;
+  surface.specular = specular;
+  return surface;
+}
+
 Lighting LightingOf(std::vector<Light> lights, const Shading& shading) {
   Lighting lighting;
   lighting.lights = std::move(lights);
@@ -45,7 +52,7 @@ Lighting LightingOf(std::vector<Light> lights, const Shading& shading) {
 
 Canvas RenderWith(const Scene& scene, const Shading& shading) {
   Canvas canvas(600, 600);
-  RenderScene(scene, canvas, {}, shading);
+  RenderScene(scene, canvas, shading);
   return canvas;
 }
 
@@ -71,12 +78,34 @@ TEST_CASE("ComputeTriangleNormal: unit, outwards for the cube's winding", "[shad
   }
 }
 
-TEST_CASE("an interpolated normal is renormalised", "[shading]") {
-  // Midway between (1, 0, 0) and (0, 1, 0) the interpolated normal is (0.5, 0.5, 0),
-  // 0.707 long; normalised, (0.707107, 0.707107, 0).
-  const Vec3 midway = 0.5 * Vec3(1, 0, 0) + 0.5 * Vec3(0, 1, 0);
-  CHECK(glm::length(midway) == Approx(0.707107));
-  CheckNear(glm::normalize(midway), {0.707107, 0.707107, 0});
+TEST_CASE("Phong shading lights a pixel with the interpolated normal made unit again",
+          "[shading]") {
+  // The bottom side runs from A, normal (1, 0, 0), to B, normal (0, 1, 0); midway, at
+  // pixel (0, -120), the interpolated normal is (0.5, 0.5, 0), 0.707 long. A light along
+  // (1, 0, 0), specular term only (s = 1): with the unit normal R = (0, 1, 0) and the
+  // point is (0, -1, 5), so <R, V>/|V| = 1/sqrt(26) = 0.196, 50 of 255. The normal left
+  // 0.707 long would give R = (-0.5, 0.5, 0) and 35.
+  const Canvas canvas(600, 600);
+  const Viewport viewport;
+  const std::array<Vec3, 3> positions = {Vec3(-2, -1, 5), Vec3(2, -1, 5), Vec3(0, 2, 5)};
+  const std::array<Vec3, 3> normals = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, -1)};
+  std::array<ShadedCorner, 3> corners;
+  for (std::size_t k = 0; k < 3; ++k) {
+    corners[k] = {positions[k], ProjectVertex(positions[k], canvas, viewport), normals[k]};
+  }
+  const Lighting lighting =
+      LightingOf({{LightType::kDirectional, 1, {}, {1, 0, 0}}},
+                 ShadingOf(ShadingModel::kPhong, NormalSource::kModel, {false, true}));
+  Canvas drawn(600, 600);
+  DepthBuffer depth_buffer(drawn, DepthValue::kInverseZ);
+  Frame frame(drawn, depth_buffer, viewport);
+  ShadePhong(corners, SurfaceOf(cgfs::kWhite, 1), lighting, frame);
+  const Vec3 P = UnProjectVertex(0, -120, 0.2, drawn, viewport);
+  CheckNear(P, {0, -1, 5});
+  const double expected = ComputeLighting(P, glm::normalize(Vec3(0.5, 0.5, 0)), -P, 1,
+                                          lighting.lights, lighting.shading.terms);
+  CHECK(expected == Approx(1 / std::sqrt(26.0)));
+  CHECK(drawn.GetPixel(0, -120) == Rgb8{50, 50, 50});
 }
 
 TEST_CASE("a large face lit from close by: Gouraud 0.070535 at its centre, Phong 1.0",
@@ -120,7 +149,8 @@ TEST_CASE("Phong interpolates the normal, Gouraud the light", "[shading]") {
   const auto shaded = [&](const Lighting& lighting) {
     Canvas drawn(600, 600);
     DepthBuffer depth_buffer(drawn, DepthValue::kInverseZ);
-    ShadeTriangle(corners, cgfs::kWhite, -1, lighting, drawn, viewport, depth_buffer);
+    Frame frame(drawn, depth_buffer, viewport);
+    ShadeTriangle(corners, SurfaceOf(cgfs::kWhite, -1), lighting, frame);
     // Just above the midpoint of the bottom side, (0, -1, 5).
     return int{drawn.GetPixel(0, -119).r};
   };

@@ -1,22 +1,18 @@
 // Chapter 13's shading models, timed with Google Benchmark (run by scripts/benchmark):
-// how much each costs on the chapter's scene at 600x600, on one core.
+// what each of the chapter's figures costs at 600x600, on one core.
 //
-//   Shading/<model>       Figures 13-1 to 13-9's scene, model normals, diffuse + specular
-//   RaytracerSpheres      Figure 13-11 (Phong)
+//   Figures/<figure>   e.g. Figures/fig-13-1-flat-triangle-normals-diffuse-specular
 #include <benchmark/benchmark.h>
-
-#include <string>
-#include <utility>
 
 #include "benchmark_main.h"
 #include "scenes.h"
 
 namespace {
 
-void Render(benchmark::State& state, const Scene& scene, const Shading& shading) {
+void Render(benchmark::State& state, const cgfs::Figure& figure) {
   Canvas canvas(600, 600);
   for (auto _ : state) {
-    RenderScene(scene, canvas, {}, shading);
+    figure.draw(canvas);
     benchmark::DoNotOptimize(canvas);
   }
 }
@@ -24,13 +20,8 @@ void Render(benchmark::State& state, const Scene& scene, const Shading& shading)
 }  // namespace
 
 void RegisterAll() {
-  for (const auto& [name, model] :
-       {std::pair{"flat", ShadingModel::kFlat}, std::pair{"gouraud", ShadingModel::kGouraud},
-        std::pair{"phong", ShadingModel::kPhong}}) {
-    benchmark::RegisterBenchmark((std::string("Shading/") + name).c_str(), Render, SceneShading(),
-                                 Shading{model, NormalSource::kModel, {}})
+  for (const cgfs::Figure& figure : Figures()) {
+    benchmark::RegisterBenchmark(("Figures/" + figure.name).c_str(), Render, figure)
         ->Unit(benchmark::kMillisecond);
   }
-  benchmark::RegisterBenchmark("RaytracerSpheres", Render, SceneRaytracerSpheres(), Shading{})
-      ->Unit(benchmark::kMillisecond);
 }

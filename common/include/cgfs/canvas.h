@@ -32,11 +32,22 @@ class Canvas {
   // Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (docs/conventions.md, "The canvas": the book's
   // Ch/2 - y would put y = Ch/2 on row 0 and y = -Ch/2 outside). Empty for pixels off
   // the canvas.
-  std::optional<ScreenPoint> ToScreen(int x, int y) const;
+  std::optional<ScreenPoint> ToScreen(int x, int y) const {
+    const ScreenPoint screen{Width() / 2 + x, Height() / 2 - y - 1};
+    if (!image_.Contains(screen.column, screen.row)) {
+      return std::nullopt;
+    }
+    return screen;
+  }
 
   // The book's only drawing primitive: clamps and rounds the colour, and
   // silently ignores pixels outside the canvas.
-  void PutPixel(int x, int y, const Color& color);
+  void PutPixel(int x, int y, const Color& color) {
+    if (const std::optional<ScreenPoint> screen = ToScreen(x, y)) {
+      image_.Set(screen->column, screen->row,
+                 {ToChannel(color.r), ToChannel(color.g), ToChannel(color.b)});
+    }
+  }
 
   // What PutPixel stored at (x, y), in canvas coordinates. (x, y) must be on the canvas.
   Rgb8 GetPixel(int x, int y) const;

@@ -22,7 +22,18 @@ inline constexpr Color kBlack{0, 0, 0};
 inline constexpr Color kWhite{255, 255, 255};
 
 // One 8-bit channel as stored in an image: clamp to [0, 255], then round to the
-// nearest integer with std::lround (docs/conventions.md, "Colours").
-std::uint8_t ToChannel(double value);
+// nearest integer, halves up, as std::lround rounds (docs/conventions.md,
+// "Colours"); NaN gives 0. Written out rather than calling std::lround because every
+// pixel of every figure goes through it: value - whole is exact for 0 < value < 255.
+inline std::uint8_t ToChannel(double value) {
+  if (!(value > 0)) {
+    return 0;
+  }
+  if (value >= 255) {
+    return 255;
+  }
+  const int whole = static_cast<int>(value);
+  return static_cast<std::uint8_t>(value - whole >= 0.5 ? whole + 1 : whole);
+}
 
 }  // namespace cgfs

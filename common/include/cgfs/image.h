@@ -2,6 +2,7 @@
 // This is what files hold; the book's centred coordinates live in Canvas.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -25,7 +26,12 @@ class Image {
     return column >= 0 && column < width_ && row >= 0 && row < height_;
   }
   Rgb8 At(int column, int row) const;
-  void Set(int column, int row, Rgb8 value);
+  void Set(int column, int row, Rgb8 value) {
+    const std::size_t i = Offset(column, row);
+    bytes_[i] = value.r;
+    bytes_[i + 1] = value.g;
+    bytes_[i + 2] = value.b;
+  }
 
   // Bytes r, g, b, r, g, b... row by row from the top.
   const std::vector<std::uint8_t>& Bytes() const { return bytes_; }
@@ -33,7 +39,11 @@ class Image {
   friend bool operator==(const Image&, const Image&) = default;
 
  private:
-  std::size_t Offset(int column, int row) const;
+  std::size_t Offset(int column, int row) const {
+    return (static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+            static_cast<std::size_t>(column)) *
+           3;
+  }
 
   int width_ = 0;
   int height_ = 0;
