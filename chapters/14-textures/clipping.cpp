@@ -88,8 +88,7 @@ std::vector<Triangle> ClipTriangle(const Triangle& triangle, const Plane& plane,
     return {};
   }
 
-  // A corner of a triangle: a vertex index, and the normal (chapter 13) and texture
-  // coordinates (chapter 14) there.
+  // A corner of a triangle: a vertex index, and the normal and texture coordinates there.
   struct Corner {
     int vertex;
     Vec3 normal;

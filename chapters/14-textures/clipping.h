@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene_rendering.h"
+#include "scene.h"
 
 // "The Clipping Volume": the plane of points P with <N, P> + D = 0. N has unit
 // length and points into the volume, so <N, P> + D is P's signed distance.
@@ -53,15 +53,15 @@ struct CameraSpaceScene {
 };
 
 // Transforms the instance's vertices and its model's bounding sphere by `transform`
-// (M_camera * I.transform); the radius grows with the instance's scale. Chapter 13:
-// the triangles' normals turn with it.
+// (M_camera * I.transform); the radius grows with the instance's scale,
+// and the triangles' normals turn with it.
 CameraSpaceInstance TransformToCameraSpace(const Instance& instance, const glm::dmat4& transform);
 
 // Listing 11-3: the triangle if it is wholly in front of the plane, nothing if it is
 // wholly behind it, or the one or two triangles that are its part in front. New
 // vertices are appended to `vertices`; the winding order of the triangle is kept.
-// The normals (chapter 13) and texture coordinates (chapter 14) at the new corners
-// are interpolated like the positions.
+// The normals and texture coordinates at the new corners are interpolated like the
+// positions.
 std::vector<Triangle> ClipTriangle(const Triangle& triangle, const Plane& plane,
                                    std::vector<Vec3>& vertices);
 

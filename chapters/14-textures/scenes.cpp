@@ -1,16 +1,13 @@
 #include "scenes.h"
 
 #include <algorithm>
-#include <optional>
-#include <string>
+#include <memory>
 #include <utility>
 
-#include "cgfs/error.h"
-
-// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
-// each face's two triangles have its normal at every corner. Chapter 14, "Painting a
-// Crate": each face's first triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its
-// second (A, C, D) has (0, 0), (1, 1), (0, 1): the whole texture on every face.
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
+// two triangles have its normal at every corner. "Painting a Crate": each face's first
+// triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its second (A, C, D) has
+// (0, 0), (1, 1), (0, 1): the whole texture on every face.
 const Model& CubeModel() {
   const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
   const std::array<glm::dvec2, 3> first = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)};
@@ -44,19 +41,8 @@ const Model& CubeModel() {
   return cube;
 }
 
-// Figure 10-3: two instances of the cube, the camera at the origin.
-Scene SceneTwoCubes() {
-  Scene scene;
-  scene.instances = {
-      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
-  };
-  return scene;
-}
-
 // Figure 10-10: the instances scaled and rotated, seen from a camera moved back
-// and to the left and turned 30 degrees to the right. Also the scene of
-// chapters 11 to 14.
+// and to the left and turned 30 degrees to the right.
 Scene SceneTransformedCubes() {
   Scene scene;
   scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
@@ -76,31 +62,12 @@ std::vector<Light> ShadingLights() {
   };
 }
 
-namespace {
-
-// The texture on the crates: the project's own, or the one --texture gave.
-std::optional<MipmappedTexture>& ChosenCrateTexture() {
-  static std::optional<MipmappedTexture> texture;
-  return texture;
+std::shared_ptr<const MipmappedTexture> CrateTexture(const ChapterSettings& settings) {
+  static const auto ours =
+      std::make_shared<const MipmappedTexture>(BuildMipChain(MakeCrateTexture(256)));
+  return settings.crate_texture ? settings.crate_texture : ours;
 }
 
-}  // namespace
-
-void UseCrateTexture(Texture texture) {
-  if (texture.width > kMaxTextureSide || texture.height > kMaxTextureSide) {
-    throw cgfs::Error("a texture of " + std::to_string(texture.width) + "x" +
-                      std::to_string(texture.height) + " is too large (at most " +
-                      std::to_string(kMaxTextureSide) + " a side)");
-  }
-  ChosenCrateTexture() = BuildMipChain(std::move(texture));
-}
-
-const MipmappedTexture& CrateTexture() {
-  static const MipmappedTexture ours = BuildMipChain(MakeCrateTexture(256));
-  return ChosenCrateTexture() ? *ChosenCrateTexture() : ours;
-}
-
-// A cube model with a texture on every face.
 Model TexturedCube(const MipmappedTexture& texture) {
   Model model = CubeModel();
   model.texture = &texture;
@@ -109,9 +76,7 @@ Model TexturedCube(const MipmappedTexture& texture) {
 
 // Figures 14-3 and 14-5: three crates, seen from Figure 10-10's camera, lit as in
 // chapter 13.
-Scene SceneCrates() {
-  static Model crate;
-  crate = TexturedCube(CrateTexture());
+Scene SceneCrates(const Model& crate) {
   Scene scene;
   scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
   scene.instances = {
@@ -123,14 +88,9 @@ Scene SceneCrates() {
   return scene;
 }
 
-// Figures 14-7 and 14-8: one crate so close that each texel of a small (32x32)
-// crate texture covers many pixels (with --texture, the given texture).
-Scene SceneCrateCloseUp() {
-  // The 32x32 level of the 256x256 crate: every line of it still there, averaged.
-  static const MipmappedTexture small =
-      BuildMipChain(BuildMipChain(MakeCrateTexture(256)).levels[3]);
-  static Model crate;
-  crate = TexturedCube(ChosenCrateTexture() ? *ChosenCrateTexture() : small);
+// Figures 14-7 and 14-8: one crate so close that each texel of its texture covers
+// many pixels.
+Scene SceneCrateCloseUp(const Model& crate) {
   Scene scene;
   scene.instances = {{&crate, {1, MakeOYRotationMatrix(-25), {0.4, 0.2, 3.2}}}};
   scene.lights = ShadingLights();
@@ -210,35 +170,66 @@ Shading WithTexturing(TextureInterpolation interpolation, TextureFilter filter) 
 
 }  // namespace
 
-std::vector<cgfs::Figure> Figures() {
+namespace {
+
+// The texture of the close-up: the one the settings give, or the 32x32 level of the
+// project's 256x256 crate (every line of it still there, averaged), so that each texel
+// covers many pixels.
+std::shared_ptr<const MipmappedTexture> CloseUpTexture(const ChapterSettings& settings) {
+  if (settings.crate_texture) {
+    return settings.crate_texture;
+  }
+  static const auto small = std::make_shared<const MipmappedTexture>(
+      BuildMipChain(BuildMipChain(MakeCrateTexture(256)).levels[3]));
+  return small;
+}
+
+}  // namespace
+
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   using enum TextureFilter;
   using enum TextureInterpolation;
-  const auto draw = [](Scene (*scene)(), Shading shading) {
-    return [scene, shading](Canvas& canvas) { RenderScene(scene(), canvas, {}, shading); };
+  // The models and their textures live as long as the figures that draw them.
+  const auto crate_texture = CrateTexture(settings);
+  const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
+  const auto close_up_texture = CloseUpTexture(settings);
+  const auto close_up_crate = std::make_shared<const Model>(TexturedCube(*close_up_texture));
+  const auto crates = [crate, crate_texture](Shading shading) {
+    return [crate, crate_texture, shading](Canvas& canvas) {
+      RenderScene(SceneCrates(*crate), canvas, shading);
+    };
+  };
+  const auto close_up = [close_up_crate, close_up_texture](Shading shading) {
+    return [close_up_crate, close_up_texture, shading](Canvas& canvas) {
+      RenderScene(SceneCrateCloseUp(*close_up_crate), canvas, shading);
+    };
+  };
+  const auto minified = [](Shading shading) {
+    return [shading](Canvas& canvas) { RenderScene(SceneMinifiedCheckerboard(), canvas, shading); };
   };
   return {
       {"fig-14-3-affine",
        "three crates, u and v interpolated linearly: the textures bend along the diagonals",
-       draw(SceneCrates, WithTexturing(kAffine, kNearest))},
+       crates(WithTexturing(kAffine, kNearest))},
       {"fig-14-5-perspective-correct",
        "the same crates, u/z and v/z interpolated: straight and in perspective",
-       draw(SceneCrates, WithTexturing(kPerspectiveCorrect, kNearest))},
+       crates(WithTexturing(kPerspectiveCorrect, kNearest))},
       {"fig-14-7-close-up-nearest", "a crate up close, nearest texel: blocks",
-       draw(SceneCrateCloseUp, WithTexturing(kPerspectiveCorrect, kNearest))},
+       close_up(WithTexturing(kPerspectiveCorrect, kNearest))},
       {"fig-14-8-close-up-bilinear", "the same crate, bilinear filtering: smooth",
-       draw(SceneCrateCloseUp, WithTexturing(kPerspectiveCorrect, kBilinear))},
+       close_up(WithTexturing(kPerspectiveCorrect, kBilinear))},
       {"fig-14-11-minified-nearest",
        "a one-texel checkerboard made small, nearest texel: noise and patterns, not grey",
-       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kNearest))},
+       minified(WithTexturing(kPerspectiveCorrect, kNearest))},
       {"minified-bilinear", "the same, bilinear: still patterns",
-       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kBilinear))},
+       minified(WithTexturing(kPerspectiveCorrect, kBilinear))},
       {"minified-mipmap", "the same, mipmapping: grey, with steps between the levels",
-       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kMipmap))},
+       minified(WithTexturing(kPerspectiveCorrect, kMipmap))},
       {"minified-trilinear", "the same, trilinear filtering: grey, no steps",
-       draw(SceneMinifiedCheckerboard, WithTexturing(kPerspectiveCorrect, kTrilinear))},
+       minified(WithTexturing(kPerspectiveCorrect, kTrilinear))},
       {"fig-14-12-mip-chain", "the crate texture and its mipmaps, each half the one before",
-       [](Canvas& canvas) { DrawMipChain(CrateTexture(), canvas); }},
+       [crate_texture](Canvas& canvas) { DrawMipChain(*crate_texture, canvas); }},
       {"crates-trilinear", "the crates with everything: perspective-correct, trilinear",
-       draw(SceneCrates, Shading{})},
+       crates(Shading{})},
   };
 }

@@ -1,10 +1,13 @@
 // The models and scenes of the chapter's figures, and the figures themselves.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "cgfs/figure.h"
 #include "clipping.h"
+#include "options.h"
+#include "scene_rendering.h"
 #include "texture.h"
 
 inline constexpr char kChapterDescription[] =
@@ -16,25 +19,25 @@ inline constexpr char kChapterDescription[] =
 // corner's normal is its face's normal, and every face has the whole texture.
 const Model& CubeModel();
 
-// The scenes of Figures 10-3 and 10-10.
-Scene SceneTwoCubes();
+// The scene of Figure 10-10.
 Scene SceneTransformedCubes();
 
 // The lights of chapter 13's figures.
 std::vector<Light> ShadingLights();
 
-// The crate texture and its mip chain: the project's own (MakeCrateTexture(256)),
-// unless UseCrateTexture gave another. Throws cgfs::Error for a texture larger than
-// kMaxTextureSide a side.
-void UseCrateTexture(Texture texture);
-const MipmappedTexture& CrateTexture();
+// The crate texture and its mip chain: the one the settings give (--texture), or the
+// project's own, MakeCrateTexture(256).
+std::shared_ptr<const MipmappedTexture> CrateTexture(const ChapterSettings& settings);
 
-// Figures 14-3 and 14-5: three crates.
-Scene SceneCrates();
+// The cube model with `texture` on every face.
+Model TexturedCube(const MipmappedTexture& texture);
+
+// Figures 14-3 and 14-5: three crates, each an instance of `crate`.
+Scene SceneCrates(const Model& crate);
 // Figures 14-7 and 14-8: one crate up close.
-Scene SceneCrateCloseUp();
+Scene SceneCrateCloseUp(const Model& crate);
 // Figure 14-11: a one-texel checkerboard on a small square and on a floor.
 Scene SceneMinifiedCheckerboard();
 
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();
+// Every figure this chapter draws, made with `settings`.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);

@@ -125,7 +125,8 @@ CLI::App& ChapterProgram::Options() {
   return *options_;
 }
 
-int ChapterProgram::Run(int argc, const char* const* argv, std::vector<Figure> (*figures)()) {
+int ChapterProgram::Run(int argc, const char* const* argv,
+                        const std::function<std::vector<Figure>()>& figures) {
   return RunReportingErrors(chapter_, [&] {
     if (!ParseArguments(*options_, argc, argv)) {
       return 0;

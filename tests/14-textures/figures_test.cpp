@@ -56,14 +56,14 @@ TEST_CASE("a textured strip: affine u is off at the screen midpoint, u/z is righ
     Shading shading;
     shading.texturing = {interpolation, TextureFilter::kNearest};
     Canvas canvas(600, 600);
-    RenderScene(scene, canvas, {.cull_back_faces = false}, shading);
+    RenderScene(scene, canvas, shading);
     CHECK(int{canvas.GetPixel(-100, 0).r} == expected);
   }
 }
 
 TEST_CASE("figures 14-3 and 14-5 differ inside the faces, not in their outlines", "[figures]") {
-  const Canvas affine = RenderFigureNamed(Figures(), "fig-14-3-affine");
-  const Canvas correct = RenderFigureNamed(Figures(), "fig-14-5-perspective-correct");
+  const Canvas affine = RenderFigureNamed(Figures({}), "fig-14-3-affine");
+  const Canvas correct = RenderFigureNamed(Figures({}), "fig-14-5-perspective-correct");
   CHECK(ChangedPixels(affine, correct).size() > 10000);
   // The same pixels are covered: only the texture moves.
   CHECK(cgfs::test::DrawnPixels(affine) == cgfs::test::DrawnPixels(correct));
@@ -71,7 +71,7 @@ TEST_CASE("figures 14-3 and 14-5 differ inside the faces, not in their outlines"
 
 TEST_CASE("figure 14-11: the small checkerboard is grey only with mipmaps", "[figures]") {
   const auto range = [](const char* figure) {
-    return RangeOnTheSquare(RenderFigureNamed(Figures(), figure));
+    return RangeOnTheSquare(RenderFigureNamed(Figures({}), figure));
   };
   CHECK(range("fig-14-11-minified-nearest") == std::pair{0, 255});  // black and white
   const auto [bilinear_low, bilinear_high] = range("minified-bilinear");
@@ -83,8 +83,8 @@ TEST_CASE("figure 14-11: the small checkerboard is grey only with mipmaps", "[fi
 }
 
 TEST_CASE("figures 14-7 and 14-8: nearest shows the texels, bilinear blends them", "[figures]") {
-  const Canvas nearest = RenderFigureNamed(Figures(), "fig-14-7-close-up-nearest");
-  const Canvas bilinear = RenderFigureNamed(Figures(), "fig-14-8-close-up-bilinear");
+  const Canvas nearest = RenderFigureNamed(Figures({}), "fig-14-7-close-up-nearest");
+  const Canvas bilinear = RenderFigureNamed(Figures({}), "fig-14-8-close-up-bilinear");
   // Along a row, nearest changes colour only at texel edges, every 10 pixels or so;
   // bilinear changes at almost every pixel.
   int nearest_changes = 0;
@@ -98,9 +98,9 @@ TEST_CASE("figures 14-7 and 14-8: nearest shows the texels, bilinear blends them
 }
 
 TEST_CASE("every figure matches its golden image", "[golden]") {
-  for (const cgfs::Figure& figure : Figures()) {
+  for (const cgfs::Figure& figure : Figures({})) {
     DYNAMIC_SECTION(figure.name) {
-      CheckAgainstGolden(CGFS_CHAPTER, Figures(), figure.name);
+      CheckAgainstGolden(CGFS_CHAPTER, Figures({}), figure.name);
     }
   }
 }

@@ -2,7 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
+#include "cgfs/image_io.h"
 #include "checks.h"
 #include "scenes.h"
 
@@ -122,7 +124,10 @@ TEST_CASE("TexelsPerPixel: the faster of the two directions, in texels", "[mipma
   CHECK(TexelsPerPixel({3.0 / 256, 4.0 / 256}, {0, 0}, texture) == Approx(5));
 }
 
-TEST_CASE("UseCrateTexture refuses a texture too large to keep", "[texture]") {
-  CHECK_THROWS_WITH(UseCrateTexture(Greys(2049, 1, std::vector<double>(2049, 0))),
-                    Catch::Contains("2049x1 is too large"));
+TEST_CASE("LoadTexture refuses a picture too large to keep as a texture", "[texture]") {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "cgfs-texture-test-2049x1.png";
+  cgfs::WriteImage(cgfs::Image(2049, 1), file);
+  CHECK_THROWS_WITH(LoadTexture(file), Catch::Contains("2049x1, too large for a texture"));
+  std::filesystem::remove(file);
 }

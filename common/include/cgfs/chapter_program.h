@@ -3,6 +3,7 @@
 // --size, --figure, --format, --list, --help).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,10 +25,12 @@ class ChapterProgram {
   // own idea (chapter 5's optimisations, for example), never to pick a scene.
   CLI::App& Options();
 
-  // Parses the arguments, then draws and writes the selected figures, printing each
-  // file and its render time. Returns the exit status: 0, or 2 with a one-line error
-  // on bad input or a file that cannot be written (nothing is written on bad input).
-  int Run(int argc, const char* const* argv, std::vector<Figure> (*figures)());
+  // Parses the arguments, then asks `figures` for the chapter's figures (after parsing,
+  // so that they are made with the settings the options gave), and draws and writes
+  // the selected ones, printing each file and its render time. Returns the exit
+  // status: 0, or 2 with a one-line error on bad input or a file that cannot be
+  // written (nothing is written on bad input).
+  int Run(int argc, const char* const* argv, const std::function<std::vector<Figure>()>& figures);
 
  private:
   int Parse(int argc, const char* const* argv);
