@@ -1,10 +1,7 @@
 #include "optimizations.h"
 
 #include <algorithm>
-#include <sstream>
 #include <thread>
-
-#include "cgfs/error.h"
 
 Optimizations AllOptimizations() {
   Optimizations all;
@@ -16,21 +13,14 @@ Optimizations AllOptimizations() {
   return all;
 }
 
-Optimizations ParseOptimizations(const std::string& list) {
-  if (list == "none") {
-    return {};
-  }
-  if (list == "all") {
-    return AllOptimizations();
-  }
+Optimizations OptimizationsNamed(const std::vector<std::string>& names) {
+  const Optimizations all = AllOptimizations();
   Optimizations chosen;
-  std::istringstream names(list);
-  std::string name;
-  bool any = false;
-  while (std::getline(names, name, ',')) {
-    any = true;
-    if (name == "threads") {
-      chosen.threads = AllOptimizations().threads;
+  for (const std::string& name : names) {
+    if (name == "all") {
+      chosen = all;
+    } else if (name == "threads") {
+      chosen.threads = all.threads;
     } else if (name == "cache") {
       chosen.cache = true;
     } else if (name == "shadow-any-hit") {
@@ -41,19 +31,7 @@ Optimizations ParseOptimizations(const std::string& list) {
       chosen.bvh = true;
     } else if (name == "subsampling") {
       chosen.subsampling = true;
-    } else {
-      throw cgfs::UsageError("--optimizations: unknown '" + name +
-                             "'; use none, all, or a comma list of threads, cache, "
-                             "shadow-any-hit, shadow-coherence, bvh, subsampling");
     }
   }
-  if (!any || list.back() == ',') {
-    throw cgfs::UsageError("--optimizations: '" + list + "' is not a list of optimisations");
-  }
-  return chosen;
-}
-
-Optimizations& ChosenOptimizations() {
-  static Optimizations chosen = AllOptimizations();
   return chosen;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 struct Optimizations {
   // "Parallelism": how many workers take tiles of the canvas; 1 is no threads.
@@ -23,11 +24,10 @@ struct Optimizations {
 // Every exact optimisation, with one worker per core.
 Optimizations AllOptimizations();
 
-// Reads a --optimizations value: "none", "all", or a comma list of
-// threads,cache,shadow-any-hit,shadow-coherence,bvh,subsampling. Throws
-// cgfs::UsageError naming what it does not know.
-Optimizations ParseOptimizations(const std::string& list);
+// The names --optimizations takes: none, all, and each switch.
+inline const std::vector<std::string> kOptimizationNames = {
+    "none", "all", "threads", "cache", "shadow-any-hit", "shadow-coherence", "bvh", "subsampling"};
 
-// The optimisations the chapter's figures are drawn with: `all` unless the command
-// line says otherwise.
-Optimizations& ChosenOptimizations();
+// The optimisations a list of those names turns on, together ("none" turns on
+// nothing, "all" every exact one); `threads` with one worker per core.
+Optimizations OptimizationsNamed(const std::vector<std::string>& names);

@@ -120,7 +120,7 @@ Vec3 CameraRayDirection(double x, double y, const Canvas& canvas, const Scene& s
 // The main loop (Listing 5-1): one ray per canvas pixel, from the camera, drawn with
 // the optimisations chosen (see optimizations.h).
 void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas,
-                 const Optimizations& optimizations = ChosenOptimizations());
+                 const Optimizations& optimizations);
 
 // The book's advice: three bounces are enough ("Rendering with Reflections").
 inline constexpr int kDefaultRecursionDepth = 3;

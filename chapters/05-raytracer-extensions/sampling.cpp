@@ -118,9 +118,10 @@ void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas) {
   });
 }
 
-void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas) {
+void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas,
+                             const Optimizations& optimizations) {
   Scene prepared = scene;
-  PrepareScene(prepared, ChosenOptimizations());
+  PrepareScene(prepared, optimizations);
   ForEachTile(
       canvas.Width(), canvas.Height(), prepared.optimizations.threads, [&](const Tile& tile) {
         for (int x = tile.x_begin; x < tile.x_end; ++x) {
@@ -131,9 +132,10 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
       });
 }
 
-long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas) {
+long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
+                         const Optimizations& optimizations) {
   Scene prepared = scene;
-  PrepareScene(prepared, ChosenOptimizations());
+  PrepareScene(prepared, optimizations);
   const int threads = prepared.optimizations.threads;
   PixelGrid<Sample> samples(canvas, Sample{});
   ForEachTile(canvas.Width(), canvas.Height(), threads, [&](const Tile& tile) {

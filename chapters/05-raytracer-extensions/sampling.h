@@ -14,11 +14,13 @@ void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas);
 // "Supersampling": n x n rays per pixel on a regular grid centred on the pixel's own
 // ray, each colour clamped to 0..255 and then averaged, drawn with the chosen
 // optimisations (subsampling aside). n = 1 is RenderScene.
-void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas);
+void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Canvas& canvas,
+                             const Optimizations& optimizations);
 
 // The adaptive variant: one ray per pixel, then 4 x 4 rays only for the pixels
 // whose ray hits another object than a neighbour's, or whose colour differs from a
 // neighbour's by more than kAdaptiveThreshold in a channel. Returns how many pixels
 // were subdivided.
 inline constexpr double kAdaptiveThreshold = 24;
-long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas);
+long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
+                         const Optimizations& optimizations);

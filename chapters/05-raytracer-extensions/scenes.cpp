@@ -230,54 +230,77 @@ Scene SceneMagnifyingGlass() {
   return scene;
 }
 
-std::vector<cgfs::Figure> Figures() {
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  const Optimizations optimizations = settings.optimizations;
   std::vector<cgfs::Figure> figures = {
       {"fig-5-1-camera", "the reflective scene from (3, 0, 1), turned 45 degrees (Figure 5-1)",
-       [](Canvas& canvas) { RenderScene(SceneCamera(), 3, canvas); }},
+       [optimizations](Canvas& canvas) { RenderScene(SceneCamera(), 3, canvas, optimizations); }},
   };
   for (const int count : {100, 1000, 10000, 100000}) {
-    figures.push_back(
-        {"sphere-field-" + std::to_string(count),
-         std::to_string(count) + " small spheres, placed from a fixed seed",
-         [count](Canvas& canvas) { RenderScene(SceneSphereField(count), 3, canvas); }});
+    figures.push_back({"sphere-field-" + std::to_string(count),
+                       std::to_string(count) + " small spheres, placed from a fixed seed",
+                       [count, optimizations](Canvas& canvas) {
+                         RenderScene(SceneSphereField(count), 3, canvas, optimizations);
+                       }});
   }
   const std::vector<cgfs::Figure> more = {
       {"triangles", "a mirror pyramid of four triangles behind the spheres",
-       [](Canvas& canvas) { RenderScene(SceneTriangles(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneTriangles(), 3, canvas, optimizations);
+       }},
       {"torus-mesh", "a torus of 102 400 triangles, through the same hierarchy",
-       [](Canvas& canvas) { RenderScene(SceneTorusMesh(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneTorusMesh(), 3, canvas, optimizations);
+       }},
       {"csg-operations", "union, intersection and difference of a red and a blue sphere",
-       [](Canvas& canvas) { RenderScene(SceneCsgOperations(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneCsgOperations(), 3, canvas, optimizations);
+       }},
       {"csg-lens", "the book's lens: the intersection of two spheres",
-       [](Canvas& canvas) { RenderScene(SceneCsgLens(), 3, canvas); }},
+       [optimizations](Canvas& canvas) { RenderScene(SceneCsgLens(), 3, canvas, optimizations); }},
       {"csg-death-star", "the book's Death Star: a sphere minus a smaller sphere",
-       [](Canvas& canvas) { RenderScene(SceneCsgDeathStar(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneCsgDeathStar(), 3, canvas, optimizations);
+       }},
       {"csg-nested", "a nested solid, ((A or B) minus C) and D",
-       [](Canvas& canvas) { RenderScene(SceneCsgNested(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneCsgNested(), 3, canvas, optimizations);
+       }},
       {"transparency", "the red sphere 60% see-through, without bending the light",
-       [](Canvas& canvas) { RenderScene(SceneTransparency(), 3, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneTransparency(), 3, canvas, optimizations);
+       }},
       {"refraction-glass-sphere", "a glass sphere (index 1.5) in front of the spheres",
-       [](Canvas& canvas) { RenderScene(SceneGlassSphere(), 5, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneGlassSphere(), 5, canvas, optimizations);
+       }},
       {"refraction-magnifying-glass", "a glass lens magnifying a wall of small spheres",
-       [](Canvas& canvas) { RenderScene(SceneMagnifyingGlass(), 5, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneMagnifyingGlass(), 5, canvas, optimizations);
+       }},
       {"thin-wires", "wires from half a pixel to five pixels wide, one ray per pixel",
-       [](Canvas& canvas) { RenderScene(SceneThinWires(), 0, canvas); }},
+       [optimizations](Canvas& canvas) {
+         RenderScene(SceneThinWires(), 0, canvas, optimizations);
+       }},
       {"subsampling-thin-wires", "the same subsampled: the wires under two pixels wide break up",
-       [](Canvas& canvas) {
-         Optimizations subsampled = ChosenOptimizations();
+       [optimizations](Canvas& canvas) {
+         Optimizations subsampled = optimizations;
          subsampled.subsampling = true;
          RenderScene(SceneThinWires(), 0, canvas, subsampled);
        }},
   };
   figures.insert(figures.end(), more.begin(), more.end());
   for (const int n : {2, 3, 4}) {  // n = 1 is fig-5-1-camera
-    figures.push_back(
-        {"supersampling-" + std::to_string(n * n),
-         "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
-         [n](Canvas& canvas) { RenderSceneSupersampled(SceneCamera(), 3, n, canvas); }});
+    figures.push_back({"supersampling-" + std::to_string(n * n),
+                       "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
+                       [n, optimizations](Canvas& canvas) {
+                         RenderSceneSupersampled(SceneCamera(), 3, n, canvas, optimizations);
+                       }});
   }
   figures.push_back({"supersampling-adaptive",
                      "Figure 5-1 with 16 rays only where neighbours differ",
-                     [](Canvas& canvas) { RenderSceneAdaptive(SceneCamera(), 3, canvas); }});
+                     [optimizations](Canvas& canvas) {
+                       RenderSceneAdaptive(SceneCamera(), 3, canvas, optimizations);
+                     }});
   return figures;
 }

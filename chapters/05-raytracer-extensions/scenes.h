@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cgfs/figure.h"
+#include "options.h"
 #include "raytracer.h"
 
 inline constexpr char kChapterDescription[] =
@@ -38,5 +39,5 @@ Scene SceneGlassSphere();
 // A glass lens (the CSG lens) held in front of a wall of small spheres: a magnifying glass.
 Scene SceneMagnifyingGlass();
 
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();
+// Every figure this chapter draws, made with `settings`.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);

@@ -1,7 +1,7 @@
 // Chapter 12, "Back Face Culling" and "Classifying Triangles", under the book's names.
 #pragma once
 
-#include "scene_rendering.h"
+#include "scene.h"
 
 // "Classifying Triangles": N = (B - A) x (C - A) points out of a model whose
 // triangles are listed clockwise as seen from outside, and V = camera - A points

@@ -35,6 +35,17 @@ std::vector<Plane> ClippingPlanes(double d) {
   };
 }
 
+std::vector<Plane> ClippingPlanes(double d, double spread) {
+  const double n = 1 / std::sqrt(1 + spread * spread);
+  return {
+      {{0, 0, 1}, -d},           // near
+      {{n, 0, spread * n}, 0},   // left
+      {{-n, 0, spread * n}, 0},  // right
+      {{0, n, spread * n}, 0},   // bottom
+      {{0, -n, spread * n}, 0},  // top
+  };
+}
+
 // "Clipping Whole Objects".
 BoundingSphere ComputeBoundingSphere(const std::vector<Vec3>& vertices) {
   BoundingSphere sphere;
@@ -88,8 +99,7 @@ std::vector<Triangle> ClipTriangle(const Triangle& triangle, const Plane& plane,
     return {};
   }
 
-  // A corner of a triangle: a vertex index, and the normal (chapter 13) and texture
-  // coordinates (chapter 14) there.
+  // A corner of a triangle: a vertex index, and the normal and texture coordinates there.
   struct Corner {
     int vertex;
     Vec3 normal;

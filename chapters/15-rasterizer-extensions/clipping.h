@@ -5,7 +5,8 @@
 #include <optional>
 #include <vector>
 
-#include "scene_rendering.h"
+#include "environment_mapping.h"
+#include "scene.h"
 
 // "The Clipping Volume": the plane of points P with <N, P> + D = 0. N has unit
 // length and points into the volume, so <N, P> + D is P's signed distance.
@@ -29,6 +30,14 @@ Vec3 Intersection(const Vec3& A, const Vec3& B, const Plane& plane);
 // the camera at 45 degrees, a 90-degree field of view.
 std::vector<Plane> ClippingPlanes(double d);
 
+// The clipping volume of a view whose edges are the clipping planes' own, a cube-map
+// face or a shadow map's view (90 degrees, viewport 2d x 2d): the near plane z = d,
+// and side planes opened wider than 45 degrees, through the points with |x| / z or
+// |y| / z = spread. With spread = 1 these are the planes above; a spread a pixel or
+// two beyond 1 keeps the rasteriser, which truncates toward zero, from leaving the
+// edge columns and rows of the view empty.
+std::vector<Plane> ClippingPlanes(double d, double spread);
+
 // "Clipping Whole Objects": a sphere that contains the whole model.
 struct BoundingSphere {
   Vec3 center{0, 0, 0};
@@ -45,7 +54,7 @@ BoundingSphere ComputeBoundingSphere(const std::vector<Vec3>& vertices);
 struct CameraSpaceInstance {
   Model model;
   BoundingSphere bounding_sphere;
-  const CubeMap* environment = nullptr;  // chapter 15: what it reflects, made for this frame
+  const CubeMap* environment = nullptr;  // what it reflects, made for this frame
 };
 
 // The scene as the clipping functions see it: every instance in camera space.
@@ -54,15 +63,15 @@ struct CameraSpaceScene {
 };
 
 // Transforms the instance's vertices and its model's bounding sphere by `transform`
-// (M_camera * I.transform); the radius grows with the instance's scale. Chapter 13:
-// the triangles' normals turn with it.
+// (M_camera * I.transform); the radius grows with the instance's scale,
+// and the triangles' normals turn with it.
 CameraSpaceInstance TransformToCameraSpace(const Instance& instance, const glm::dmat4& transform);
 
 // Listing 11-3: the triangle if it is wholly in front of the plane, nothing if it is
 // wholly behind it, or the one or two triangles that are its part in front. New
 // vertices are appended to `vertices`; the winding order of the triangle is kept.
-// The normals (chapter 13) and texture coordinates (chapter 14) at the new corners
-// are interpolated like the positions.
+// The normals and texture coordinates at the new corners are interpolated like the
+// positions.
 std::vector<Triangle> ClipTriangle(const Triangle& triangle, const Plane& plane,
                                    std::vector<Vec3>& vertices);
 

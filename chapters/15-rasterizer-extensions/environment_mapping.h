@@ -12,8 +12,6 @@
 
 using cgfs::Vec3;
 
-struct Scene;
-
 // The six faces of a cube map, each a 90-degree view along one axis.
 enum class CubeFace { kPositiveX, kNegativeX, kPositiveY, kNegativeY, kPositiveZ, kNegativeZ };
 
@@ -38,16 +36,12 @@ struct CubeMap {
   std::array<Texture, 6> faces;
 };
 
-// The surroundings seen from `centre`: the scene's non-reflective instances rendered
-// six times with 90-degree views (viewport 2 x 2 at d = 1), size x size pixels each,
-// lit by the scene's lights with the default (Phong) shading and none of chapter 15's
-// stages, so reflections show no shadows. The reflective ones are left out: each
-// would otherwise have to be in the others' maps, and its own map is made from inside
-// it.
-CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size);
-
 // Chapter 4's ReflectRay: R reflected about the normal N, 2N<N, R> - R.
 Vec3 ReflectRay(const Vec3& R, const Vec3& N);
 
-// The colour the cube map shows in direction R (world space), bilinear.
+// The colour the cube map shows in direction R (world space), bilinear. Pixel (i, j)
+// of a face, like every canvas's (chapter 1's mapping), shows the direction through
+// canvas point (i - S/2, S/2 - 1 - j), which is (s, t) = (i / S, (j + 1) / S) on the
+// face; GetTexel puts texel (i, j) at the point (i, j), so (s, t) is read at
+// (s S, t S - 1).
 Color SampleCubeMap(const CubeMap& cube_map, const Vec3& R);

@@ -32,8 +32,8 @@ struct LightingTerms {
 // Chapter 3's ComputeLighting (Listings 3-1 and 3-2): the light at point P with unit
 // normal N, seen along V (from P towards the camera), for a surface of specular
 // exponent s (-1: matte). P, N, V and the lights must be in the same space.
-// Chapter 15, "Shadow Mapping": `visibility`, if not empty, has for each light the
-// fraction of it that reaches P (as chapter 4's shadow rays decide, 0 or 1).
+// "Shadow Mapping": `visibility`, if not empty, has for each light the fraction of it
+// that reaches P (as chapter 4's shadow rays decide, 0 or 1).
 double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s,
                        const std::vector<Light>& lights, const LightingTerms& terms = {},
                        std::span<const double> visibility = {});

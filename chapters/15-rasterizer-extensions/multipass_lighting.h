@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "canvas_grid.h"
 #include "depth_buffer.h"
 #include "stencil_buffer.h"
 
@@ -33,21 +34,20 @@ class AccumulationBuffer {
   void WriteTo(Canvas& canvas) const;
 
  private:
-  // Where (x, y) is kept (as PutPixel maps it to the image), or -1 off the canvas.
-  std::ptrdiff_t Index(int x, int y) const;
-
-  const Canvas* canvas_;
-  std::vector<Color> colors_;
-  std::vector<int> last_pass_;  // the pass that last drew each pixel; -1: none
+  // A pixel's sum so far, and the pass that last drew it (-1: none).
+  struct Sum {
+    Color color{0, 0, 0};
+    int last_pass = -1;
+  };
+  CanvasGrid<Sum> sums_;
   int pass_ = 0;
 };
 
 // How a pass treats the pixels of a triangle it draws.
 struct Pass {
-  // Where the colours go: nullptr draws straight onto the canvas, in one pass
-  // (chapters 12 to 14).
+  // Where the colours go: nullptr draws straight onto the canvas, in one pass.
   AccumulationBuffer* sum = nullptr;
-  // The first pass: depth test and set, as in chapter 12, the colour Set. A later
+  // The first pass: depth test and set, as "Depth Buffering" does, the colour Set. A later
   // pass leaves the depth buffer as it is: it draws only where a triangle's depth is
   // exactly what the first pass stored (the same triangle, rasterised again the
   // same way, gives the same 1/z), and only where `stencil` (if any) holds 0.

@@ -48,3 +48,21 @@ Texture MakeDiamondNormalMap(int size, int bumps) {
   }
   return texture;
 }
+
+Texture MakeDiamondTiles(int size, int bumps) {
+  Texture texture{size, size, {}};
+  const double cell = static_cast<double>(size) / bumps;
+  const Color stone(214, 192, 152);
+  const Color grout(104, 88, 72);
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      const double x = std::fmod(i + 0.5, cell) / cell * 2 - 1;
+      const double y = std::fmod(j + 0.5, cell) / cell * 2 - 1;
+      const bool on_a_bump = std::abs(x) + std::abs(y) < 1;
+      const bool lighter =
+          (static_cast<int>((i + 0.5) / cell) + static_cast<int>((j + 0.5) / cell)) % 2 == 0;
+      texture.texels.push_back(on_a_bump ? stone * (lighter ? 1.0 : 0.88) : grout);
+    }
+  }
+  return texture;
+}

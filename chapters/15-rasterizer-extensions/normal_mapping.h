@@ -36,3 +36,8 @@ Vec3 ApplyNormalMap(const Vec3& n, const TangentBasis& basis, const Vec3& N);
 // The project's normal map: size x size texels of bumps x bumps diamond-shaped
 // pyramids on a flat ground, in the encoding above.
 Texture MakeDiamondNormalMap(int size, int bumps);
+
+// Its colour texture: the diamonds as stone tiles, a little lighter and darker in turn,
+// and the ground between them as darker grout, texel for texel where the normal map
+// has its bumps and its ground.
+Texture MakeDiamondTiles(int size, int bumps);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "cgfs/math.h"
-#include "shaded_triangles.h"
+#include "triangles.h"
 
 using cgfs::Vec3;
 

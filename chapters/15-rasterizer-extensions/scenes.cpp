@@ -1,17 +1,17 @@
 #include "scenes.h"
 
 #include <algorithm>
-#include <optional>
-#include <string>
+#include <memory>
 #include <utility>
 
-#include "cgfs/error.h"
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "sphere_model.h"
 
-// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. Chapter 13, "Normals":
-// each face's two triangles have its normal at every corner. Chapter 14, "Painting a
-// Crate": each face's first triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its
-// second (A, C, D) has (0, 0), (1, 1), (0, 1): the whole texture on every face.
+// "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
+// two triangles have its normal at every corner. "Painting a Crate": each face's first
+// triangle (A, B, C) has (u, v) = (0, 0), (1, 0), (1, 1), its second (A, C, D) has
+// (0, 0), (1, 1), (0, 1): the whole texture on every face.
 const Model& CubeModel() {
   const auto face = [](const Vec3& N) { return std::array<Vec3, 3>{N, N, N}; };
   const std::array<glm::dvec2, 3> first = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1)};
@@ -45,19 +45,8 @@ const Model& CubeModel() {
   return cube;
 }
 
-// Figure 10-3: two instances of the cube, the camera at the origin.
-Scene SceneTwoCubes() {
-  Scene scene;
-  scene.instances = {
-      {&CubeModel(), {1, glm::dmat4(1.0), {-1.5, 0, 7}}},
-      {&CubeModel(), {1, glm::dmat4(1.0), {1.25, 2, 7.5}}},
-  };
-  return scene;
-}
-
 // Figure 10-10: the instances scaled and rotated, seen from a camera moved back
-// and to the left and turned 30 degrees to the right. Also the scene of
-// chapters 11 to 14.
+// and to the left and turned 30 degrees to the right.
 Scene SceneTransformedCubes() {
   Scene scene;
   scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
@@ -77,31 +66,12 @@ std::vector<Light> ShadingLights() {
   };
 }
 
-namespace {
-
-// The texture on the crates: the project's own, or the one --texture gave.
-std::optional<MipmappedTexture>& ChosenCrateTexture() {
-  static std::optional<MipmappedTexture> texture;
-  return texture;
+std::shared_ptr<const MipmappedTexture> CrateTexture(const ChapterSettings& settings) {
+  static const auto ours =
+      std::make_shared<const MipmappedTexture>(BuildMipChain(MakeCrateTexture(256)));
+  return settings.crate_texture ? settings.crate_texture : ours;
 }
 
-}  // namespace
-
-void UseCrateTexture(Texture texture) {
-  if (texture.width > kMaxTextureSide || texture.height > kMaxTextureSide) {
-    throw cgfs::Error("a texture of " + std::to_string(texture.width) + "x" +
-                      std::to_string(texture.height) + " is too large (at most " +
-                      std::to_string(kMaxTextureSide) + " a side)");
-  }
-  ChosenCrateTexture() = BuildMipChain(std::move(texture));
-}
-
-const MipmappedTexture& CrateTexture() {
-  static const MipmappedTexture ours = BuildMipChain(MakeCrateTexture(256));
-  return ChosenCrateTexture() ? *ChosenCrateTexture() : ours;
-}
-
-// A cube model with a texture on every face.
 Model TexturedCube(const MipmappedTexture& texture) {
   Model model = CubeModel();
   model.texture = &texture;
@@ -110,9 +80,7 @@ Model TexturedCube(const MipmappedTexture& texture) {
 
 // Figures 14-3 and 14-5: three crates, seen from Figure 10-10's camera, lit as in
 // chapter 13.
-Scene SceneCrates() {
-  static Model crate;
-  crate = TexturedCube(CrateTexture());
+Scene SceneCrates(const Model& crate) {
   Scene scene;
   scene.camera = {{-3, 1, 2}, MakeOYRotationMatrix(-30)};
   scene.instances = {
@@ -141,11 +109,6 @@ Model Quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Col
   return model;
 }
 
-const Texture& DiamondNormalMap() {
-  static const Texture normal_map = MakeDiamondNormalMap(256, 8);
-  return normal_map;
-}
-
 // A floor 20 x 20 at height y, from z = -2 to z = 18.
 Model Floor(double y) {
   return Quad({-10, y, 18}, {10, y, 18}, {10, y, -2}, {-10, y, -2}, Color(200, 200, 200));
@@ -159,9 +122,20 @@ const MipmappedTexture& FloorCheckerboard() {
 
 }  // namespace
 
+const Texture& DiamondNormalMap() {
+  static const Texture normal_map = MakeDiamondNormalMap(256, 8);
+  return normal_map;
+}
+
+const MipmappedTexture& DiamondTiles() {
+  static const MipmappedTexture tiles = BuildMipChain(MakeDiamondTiles(256, 8));
+  return tiles;
+}
+
 Scene SceneNormalMappedSquare(bool light_from_left) {
   static const Model square = [] {
-    Model model = Quad({-1, 1, 5}, {1, 1, 5}, {1, -1, 5}, {-1, -1, 5}, Color(210, 200, 180));
+    Model model = Quad({-1, 1, 5}, {1, 1, 5}, {1, -1, 5}, {-1, -1, 5}, cgfs::kWhite);
+    model.texture = &DiamondTiles();
     model.normal_map = &DiamondNormalMap();
     return model;
   }();
@@ -172,7 +146,7 @@ Scene SceneNormalMappedSquare(bool light_from_left) {
   return scene;
 }
 
-Scene SceneMirrorSphere() {
+Scene SceneMirrorSphere(const Model& crate) {
   static const Model floor = [] {
     Model model = Floor(-1);
     model.texture = &FloorCheckerboard();
@@ -184,7 +158,7 @@ Scene SceneMirrorSphere() {
     model.reflective = 0.8;
     return model;
   }();
-  Scene scene = SceneCrates();
+  Scene scene = SceneCrates(crate);
   scene.instances.push_back({&floor, {}});
   scene.instances.push_back({&mirror, {1, glm::dmat4(1.0), {0.6, 0, 7.2}}});
   scene.lights = {{LightType::kAmbient, 0.25}, {LightType::kPoint, 0.75, {-4, 7, 4}}};
@@ -228,14 +202,28 @@ Scene SceneCameraInShadow() {
   return scene;
 }
 
-Scene SceneEverything() {
+Scene SceneCubeOverFloor() {
+  static const Model floor = Floor(-1);
+  Scene scene;
+  // Two units up, looking 25 degrees down: a turn about X, as MakeOYRotationMatrix
+  // turns about Y.
+  scene.camera = {{0, 2, 1}, glm::rotate(glm::dmat4(1.0), glm::radians(25.0), Vec3(1, 0, 0))};
+  scene.instances = {
+      {&CubeModel(), {0.7, MakeOYRotationMatrix(30), {-0.5, 0, 6}}},
+      {&floor, {}},
+  };
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kPoint, 0.8, {-3.5, 3.5, 4.5}}};
+  return scene;
+}
+
+Scene SceneEverything(const Model& crate) {
   static const Model floor = [] {
     Model model = Floor(-1);
     model.texture = &FloorCheckerboard();
     model.normal_map = &DiamondNormalMap();
     return model;
   }();
-  Scene scene = SceneMirrorSphere();
+  Scene scene = SceneMirrorSphere(crate);
   scene.instances[3].model = &floor;
   return scene;
 }
@@ -263,6 +251,44 @@ void DrawCubeMap(const CubeMap& cube_map, Canvas& canvas) {
   draw(CubeFace::kNegativeY, 1, 2);
 }
 
+// Figure 15-2: a normal map shown as the RGB texture it is, filling the canvas.
+void DrawTexture(const Texture& texture, Canvas& canvas) {
+  for (int row = 0; row < canvas.Height(); ++row) {
+    for (int column = 0; column < canvas.Width(); ++column) {
+      canvas.PutPixel(column - canvas.Width() / 2, canvas.Height() / 2 - 1 - row,
+                      GetTexelNearest(texture, (column + 0.5) * texture.width / canvas.Width(),
+                                      (row + 0.5) * texture.height / canvas.Height()));
+    }
+  }
+}
+
+// Figure 15-4: the edges of the occluder's shadow volume as `light` casts it, from the
+// silhouette down to where they meet the floor at y = floor_y, drawn over the canvas
+// in dark red: the outline they trace on the floor is the shadow's.
+void DrawShadowVolumeEdges(const Scene& scene, const Instance& occluder, const Light& light,
+                           double floor_y, Canvas& canvas) {
+  Model world = *occluder.model;
+  for (Vec3& V : world.vertices) {
+    V = ApplyTransform(V, occluder.transform);
+  }
+  const glm::dmat4 M_camera = MakeCameraMatrix(scene.camera.position, scene.camera.orientation);
+  const auto project = [&](const Vec3& V) {
+    return ProjectVertex(cgfs::ToCartesian(M_camera * glm::dvec4(V, 1.0)), canvas, scene.viewport);
+  };
+  const auto on_floor = [&](const Vec3& V) {
+    const Vec3 away = V - light.position;
+    return V + away * ((floor_y - V.y) / away.y);
+  };
+  const Color edge(150, 0, 0);
+  for (const auto& [a, b] : SilhouetteEdges(world, light)) {
+    const Vec3& A = world.vertices[static_cast<std::size_t>(a)];
+    const Vec3& B = world.vertices[static_cast<std::size_t>(b)];
+    DrawLine(project(A), project(B), edge, canvas);
+    DrawLine(project(A), project(on_floor(A)), edge, canvas);
+    DrawLine(project(on_floor(A)), project(on_floor(B)), edge, canvas);
+  }
+}
+
 template <typename Change>
 Extensions With(const Change& change) {
   Extensions extensions;
@@ -272,14 +298,22 @@ Extensions With(const Change& change) {
 
 }  // namespace
 
-std::vector<cgfs::Figure> Figures() {
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  // The crate and its texture live as long as the figures that draw them.
+  const auto crate_texture = CrateTexture(settings);
+  const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
   const auto draw = [](Scene (*scene)(), Extensions extensions) {
-    return
-        [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, {}, extensions); };
+    return [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, extensions); };
+  };
+  const auto draw_crates = [crate, crate_texture](Scene (*scene)(const Model&),
+                                                  Extensions extensions) {
+    return [crate, crate_texture, scene, extensions](Canvas& canvas) {
+      RenderScene(scene(*crate), canvas, {}, extensions);
+    };
   };
   const auto draw_square = [](bool light_from_left, bool normal_mapping) {
     return [=](Canvas& canvas) {
-      RenderScene(SceneNormalMappedSquare(light_from_left), canvas, {}, {},
+      RenderScene(SceneNormalMappedSquare(light_from_left), canvas, {},
                   With([=](Extensions& e) { e.normal_mapping = normal_mapping; }));
     };
   };
@@ -309,40 +343,49 @@ std::vector<cgfs::Figure> Figures() {
     e.shadow_mapping.percentage_closer_filtering = true;
   });
   return {
-      {"fig-15-1a-square-without-normal-map", "a flat square lit from the left: flat",
+      {"fig-15-1a-textured-square", "a square of stone tiles lit from the left: flat",
        draw_square(true, false)},
       {"fig-15-1b-normal-map-lit-from-left",
        "the same square with a normal map: diamond bumps, lit on their left faces",
        draw_square(true, true)},
       {"fig-15-1c-normal-map-lit-from-right", "the same, lit from the right: the other faces",
        draw_square(false, true)},
-      {"fig-15-2-environment-map",
-       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
-       draw(SceneMirrorSphere, environment)},
-      {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
-       [](Canvas& canvas) {
-         const Scene scene = SceneMirrorSphere();
-         DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
-                     canvas);
-       }},
+      {"fig-15-2-normal-map", "the normal map of figure 15-1 as an RGB texture: blue-purple",
+       [](Canvas& canvas) { DrawTexture(DiamondNormalMap(), canvas); }},
       {"fig-15-3a-ambient-pass", "chapter 13's scene lit by its ambient light alone", one_light(0)},
       {"fig-15-3b-directional-pass", "lit by its directional light alone", one_light(1)},
       {"fig-15-3c-point-pass", "lit by its point light alone", one_light(2)},
       {"fig-15-3d-sum-of-passes", "the three passes added up, clamped once: as one pass",
        draw(SceneShading, passes)},
+      {"fig-15-4-shadow-volume",
+       "a cube's shadow volume for a point light, its edges down to the floor: the shadow",
+       [volumes](Canvas& canvas) {
+         const Scene scene = SceneCubeOverFloor();
+         RenderScene(scene, canvas, {}, volumes);
+         DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
+       }},
+      {"environment-map",
+       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
+       draw_crates(SceneMirrorSphere, environment)},
+      {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
+       [crate, crate_texture](Canvas& canvas) {
+         const Scene scene = SceneMirrorSphere(*crate);
+         DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
+                     canvas);
+       }},
       {"no-shadows", "chapter 13's objects over a floor, lit from above left, no shadows",
        draw(SceneShadows, {})},
-      {"fig-15-4-shadow-volumes", "the same with stencil shadows (depth fail)",
+      {"stencil-shadows", "the same with stencil shadows (depth fail)",
        draw(SceneShadows, volumes)},
+      {"shadow-map", "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
+       draw(SceneShadows, maps)},
+      {"shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
+       draw(SceneShadows, maps_pcf)},
       {"camera-in-shadow-depth-fail", "the camera inside a shadow volume: depth fail counts right",
        draw(SceneCameraInShadow, volumes)},
       {"camera-in-shadow-depth-pass",
        "the same counted in front of the surface (depth pass): shadow and light swapped",
        draw(SceneCameraInShadow, depth_pass)},
-      {"fig-15-5-shadow-map", "shadow mapping, 256 x 256 per view, no filtering: blocky edges",
-       draw(SceneShadows, maps)},
-      {"fig-15-6-shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
-       draw(SceneShadows, maps_pcf)},
       {"shadow-map-directional",
        "a directional light's shadows from one orthographic 512 x 512 map, filtered",
        draw(SceneShadowsDirectional, With([](Extensions& e) {
@@ -352,6 +395,6 @@ std::vector<cgfs::Figure> Figures() {
             }))},
       {"everything",
        "textures, a normal-mapped floor, a mirror sphere and filtered shadow maps at once",
-       draw(SceneEverything, everything)},
+       draw_crates(SceneEverything, everything)},
   };
 }

@@ -1,10 +1,13 @@
 // The models and scenes of the chapter's figures, and the figures themselves.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "cgfs/figure.h"
 #include "clipping.h"
+#include "options.h"
+#include "scene_rendering.h"
 #include "texture.h"
 
 inline constexpr char kChapterDescription[] =
@@ -16,29 +19,33 @@ inline constexpr char kChapterDescription[] =
 // corner's normal is its face's normal, and every face has the whole texture.
 const Model& CubeModel();
 
-// The scenes of Figures 10-3 and 10-10.
-Scene SceneTwoCubes();
+// The scene of Figure 10-10.
 Scene SceneTransformedCubes();
 
 // The lights of chapter 13's figures.
 std::vector<Light> ShadingLights();
 
-// The crate texture and its mip chain: the project's own (MakeCrateTexture(256)),
-// unless UseCrateTexture gave another. Throws cgfs::Error for a texture larger than
-// kMaxTextureSide a side.
-void UseCrateTexture(Texture texture);
-const MipmappedTexture& CrateTexture();
+// The crate texture and its mip chain: the one the settings give (--texture), or the
+// project's own, MakeCrateTexture(256).
+std::shared_ptr<const MipmappedTexture> CrateTexture(const ChapterSettings& settings);
 
-// Figures 14-3 and 14-5: three crates.
-Scene SceneCrates();
+// The cube model with `texture` on every face.
+Model TexturedCube(const MipmappedTexture& texture);
 
-// "Normal Mapping": a square facing the camera, 2 x 2 at z = 5, with the project's
-// diamond normal map, lit by ambient light 0.2 and a point light 0.8 at (-3, 0, 4)
-// (from the left) or at (3, 0, 4) (from the right).
+// Chapter 14's three crates, each an instance of `crate`.
+Scene SceneCrates(const Model& crate);
+
+// "Normal Mapping" (Figure 15-1): a square of stone tiles facing the camera, 2 x 2 at
+// z = 5, with the project's diamond normal map, lit by ambient light 0.2 and a point
+// light 0.8 at (-3, 0, 4) (from the left) or at (3, 0, 4) (from the right).
 Scene SceneNormalMappedSquare(bool light_from_left);
 
+// The normal map of Figure 15-1, and its colour texture.
+const Texture& DiamondNormalMap();
+const MipmappedTexture& DiamondTiles();
+
 // "Environment Mapping": the crates on a checkered floor around a mirror sphere.
-Scene SceneMirrorSphere();
+Scene SceneMirrorSphere(const Model& crate);
 
 // Chapter 13's scene (two cubes and a sphere, its three lights).
 Scene SceneShading();
@@ -54,9 +61,14 @@ Scene SceneShadowsDirectional();
 // floor around it.
 Scene SceneCameraInShadow();
 
+// Figure 15-4: one cube over a floor at y = -1, seen from above, lit by ambient light
+// 0.2 and a point light 0.8 above and to the left; the cube is the first instance, the
+// point light the last light.
+Scene SceneCubeOverFloor();
+
 // Everything at once: textured crates and a mirror sphere over a normal-mapped floor,
 // shadowed.
-Scene SceneEverything();
+Scene SceneEverything(const Model& crate);
 
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();
+// Every figure this chapter draws, made with `settings`.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);

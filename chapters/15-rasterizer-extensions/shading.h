@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include "depth_buffer.h"
@@ -12,6 +13,7 @@
 #include "lighting.h"
 #include "mipmap.h"
 #include "multipass_lighting.h"
+#include "normal_mapping.h"
 #include "projection.h"
 #include "shadow_mapping.h"
 
@@ -23,13 +25,15 @@ enum class ShadingModel { kFlat, kGouraud, kPhong };
 // corner (for a sphere, the true normal of the surface there).
 enum class NormalSource { kTriangle, kModel };
 
-// Chapter 14: how texture coordinates are interpolated across a triangle. Affine
-// interpolates u and v like any attribute, which is wrong (Figure 14-3): like z,
-// they are not linear on the canvas. u/z and v/z are, like 1/z, so interpolating
-// them and dividing by the interpolated 1/z gives the right u and v (Figure 14-5).
+// How texture coordinates are carried across a triangle. Affine carries u and v like
+// any attribute, which is wrong (Figure 14-3): like z, they are not linear on the
+// canvas. u/z and v/z are, like 1/z, so carrying them and dividing by the carried 1/z
+// gives the right u and v (Figure 14-5). The illumination (Gouraud) and the normal
+// (Phong) stay affine, as the book leaves them: their error is small where a triangle
+// covers little depth, and they change slowly.
 enum class TextureInterpolation { kAffine, kPerspectiveCorrect };
 
-// Chapter 14: how a textured triangle reads its texture.
+// How a textured triangle reads its texture.
 struct Texturing {
   TextureInterpolation interpolation = TextureInterpolation::kPerspectiveCorrect;
   TextureFilter filter = TextureFilter::kTrilinear;
@@ -44,17 +48,47 @@ struct Shading {
 };
 
 // What lighting a triangle needs besides the triangle: the scene's lights in camera
-// space, and the shading to use. Chapter 15: where the camera-space points are in
-// the world (cube maps and shadow maps are made in world space), what the object
-// being drawn reflects, each light's shadow map, and the pass being drawn.
+// space, the shading to use, and ("Shadow Mapping") each light's shadow map, in world
+// space: none at all, or one per light (nullptr for a light that has none).
 struct Lighting {
   std::vector<Light> lights;
   Shading shading;
+  std::vector<const ShadowMap*> shadow_maps;
+};
+
+// What a triangle is made of: its colour, how shiny it is (chapter 3's specular
+// exponent, -1 for matte), the texture that takes the colour's place, if any, the
+// normal map that bends its normals, if any, and how much it reflects (0..1) of the
+// environment's cube map, if it has one.
+struct Surface {
+  Color color{0, 0, 0};
+  double specular = -1;
+  const MipmappedTexture* texture = nullptr;
+  const Texture* normal_map = nullptr;
+  double reflective = 0;
+  const CubeMap* environment = nullptr;
+};
+
+// Where shaded pixels go: the canvas, behind a 1/z depth buffer, and the viewport
+// that maps the scene onto it; where the camera is in the world (the shadow maps and
+// cube maps are made in world space); and the pass being drawn ("Stencil Shadows").
+struct Frame {
+  Frame(Canvas& canvas, DepthBuffer& depth_buffer, const Viewport& viewport)
+      : canvas(canvas), depth_buffer(depth_buffer), viewport(viewport) {}
+
+  Canvas& canvas;
+  DepthBuffer& depth_buffer;
+  Viewport viewport;
   glm::dmat4 camera_to_world{1.0};
-  const CubeMap* environment = nullptr;       // "Environment Mapping"
-  std::vector<const ShadowMap*> shadow_maps;  // "Shadow Mapping": none, or one per light
-  ShadowMapping shadow_mapping;
-  Pass pass;  // "Stencil Shadows": one pass, unless multi-pass lighting says otherwise
+  Pass pass;
+
+  // "Depth Buffering": whether the point at 1/z = inv_z is closer than what pixel
+  // (x, y) shows (and if so, it is now what the pixel shows); in a later pass,
+  // whether the pass may draw the pixel (PassDepthTest).
+  bool TestAndSet(int x, int y, double inv_z) {
+    return PassDepthTest(pass, depth_buffer, x, y, inv_z);
+  }
+  void Write(int x, int y, const Color& color) { PassWrite(pass, canvas, x, y, color); }
 };
 
 // "Flat Shading": the unit normal of the triangle's plane, (B - A) x (C - A)
@@ -66,8 +100,7 @@ Vec3 ComputeTriangleNormal(const Vec3& A, const Vec3& B, const Vec3& C);
 Vec3 UnProjectVertex(int x, int y, double inv_z, const Canvas& canvas, const Viewport& viewport);
 
 // One corner of a triangle, as shading needs it: the camera-space vertex, where it
-// lands on the canvas, its unit normal in camera space, and (chapter 14) its texture
-// coordinates (u, v).
+// lands on the canvas, its normal in camera space, and its texture coordinates (u, v).
 struct ShadedCorner {
   Vec3 position;
   Point projected;
@@ -75,28 +108,90 @@ struct ShadedCorner {
   glm::dvec2 uv{0, 0};
 };
 
-// The illumination a flat-shaded triangle has everywhere: the light at its
-// centroid, with the average of its corners' normals (for kTriangle normals, the
-// triangle's own normal).
-double FlatIllumination(const std::array<ShadedCorner, 3>& corners, double specular,
-                        const Lighting& lighting);
+// What each corner carries across the triangle to its pixels (WalkTriangle): 1/z,
+// for the depth test and UnProjectVertex; the illumination, for Gouraud shading; the
+// normal, for Phong shading; and the texture coordinates, (u, v) or (u/z, v/z).
+struct Attributes {
+  double inv_z = 0;
+  double illumination = 0;
+  Vec3 normal{0, 0, 0};
+  glm::dvec2 uv{0, 0};
+};
+Attributes operator+(const Attributes& a, const Attributes& b);
+Attributes operator-(const Attributes& a, const Attributes& b);
+Attributes operator*(const Attributes& a, double k);
+Attributes operator/(const Attributes& a, double k);
 
-// Chapter 14: texels per pixel at a point of a textured triangle, from how fast the
+// "Perspective-Correct Texture Mapping": what a corner at depth z carries for texture
+// coordinates uv, and the (u, v) a pixel gets back from what it was carried: u/z and
+// v/z, divided by the carried 1/z; or (affine) u and v themselves.
+glm::dvec2 CarriedTextureCoordinates(const glm::dvec2& uv, double z, const Texturing& texturing);
+glm::dvec2 TextureCoordinates(const Attributes& attributes, const Texturing& texturing);
+
+// How fast the carried texture coordinates and 1/z change from one pixel to the next
+// across (x) and up (y) the canvas, each (d/dx, d/dy): the same everywhere on a
+// triangle, since they are linear on the canvas.
+struct CarriedGradients {
+  glm::dvec2 u{0, 0};
+  glm::dvec2 v{0, 0};
+  glm::dvec2 inv_z{0, 0};
+};
+CarriedGradients ComputeCarriedGradients(const std::array<ShadedCorner, 3>& corners,
+                                         const Texturing& texturing);
+
+// "Mipmapping": texels per pixel at a point of a textured triangle, from how fast the
 // texel coordinates (u * width, v * height) change from one pixel to the next across
 // and up the canvas, whichever is faster.
 double TexelsPerPixel(const glm::dvec2& duv_dx, const glm::dvec2& duv_dy, const Texture& texture);
 
-// The triangle filled, depth-tested against a 1/z buffer, each pixel `color` times
-// the illumination there: computed once (flat), at the corners and interpolated
-// (Gouraud), or at every pixel from the interpolated normal and the point
-// UnProjectVertex rebuilds (Phong). `corners` in the triangle's own order; with
-// kTriangle normals the corners' normals are ignored. Chapter 14: with a texture,
-// the texel at the pixel's (u, v) takes the place of `color`. Chapter 15, with Phong
-// shading: a normal map bends the normal at every pixel; a surface `reflective`
-// (0..1) mixes in the environment's colour in the reflected direction, as chapter 4
-// mixes in the reflected ray's; each light is dimmed by its shadow map, if it has
-// one; and the pixels go where lighting.pass sends them.
-void ShadeTriangle(const std::array<ShadedCorner, 3>& corners, const Color& color, double specular,
-                   const Lighting& lighting, Canvas& canvas, const Viewport& viewport,
-                   DepthBuffer& depth_buffer, const MipmappedTexture* texture = nullptr,
-                   const Texture* normal_map = nullptr, double reflective = 0);
+// The surface's colour at a pixel: its texture's, sampled at the pixel's (u, v) with
+// the filter `texturing` asks for, or its own colour if it has no texture. The change
+// of u and v per pixel, for TexelsPerPixel, is the quotient rule applied to the
+// carried gradients (perspective-correct), or the gradients themselves (affine).
+Color SurfaceColor(const Surface& surface, const Attributes& attributes,
+                   const CarriedGradients& gradients, const Texturing& texturing);
+
+// "Normal Mapping": the unit normal N bent by the surface's normal map at (u, v), if
+// it has one. The map is read as a colour texture is, texel (i, j) at the point (i, j).
+Vec3 BendNormal(const Vec3& N, const Surface& surface, const glm::dvec2& uv,
+                const TangentBasis& tangents);
+
+// "Shadow Mapping": how much of each light reaches camera-space point P, whose unit
+// normal is N, into `visibility` (one per light); nothing when no light has a map.
+void LightVisibilities(const Vec3& P, const Vec3& N, const Lighting& lighting,
+                       const glm::dmat4& camera_to_world, std::vector<double>& visibility);
+
+// "Environment Mapping": the pixel's colour with its reflection mixed in, as chapter
+// 4 mixes in the reflected ray's: (1 - r) local + r SampleCubeMap(R), R = 2N<N, V> - V
+// turned into world space. The reflection is added in the first pass only, as the
+// ambient light is; a later pass still scales the local colour by 1 - r.
+Color MixReflection(const Color& local, const Vec3& P, const Vec3& N, const Surface& surface,
+                    const Frame& frame);
+
+// The normals the shading uses at the three corners, unit length: the corners' own,
+// or (kTriangle) the triangle's, ComputeTriangleNormal.
+std::array<Vec3, 3> CornerNormals(const std::array<ShadedCorner, 3>& corners, NormalSource source);
+
+// "Flat Shading": the illumination the whole triangle has: the light at its
+// centroid, with the average of its corners' normals (for kTriangle normals, the
+// triangle's own normal). V = -P: in camera space the camera is at the origin.
+double FlatIllumination(const std::array<ShadedCorner, 3>& corners, double specular,
+                        const Lighting& lighting);
+
+// The three ways of shading a triangle, each filling it (depth-tested) with the
+// surface's colour (SurfaceColor) times the illumination: computed once for the triangle (flat), at
+// its corners and interpolated (Gouraud), or at every pixel, from the interpolated
+// normal and the point UnProjectVertex rebuilds (Phong). `corners` in the triangle's
+// own order. Normal maps, shadow maps and reflections need a normal and a point at
+// every pixel, so only Phong shading has them; passes (and so stencil shadows) work
+// with any shading.
+void ShadeFlat(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
+               const Lighting& lighting, Frame& frame);
+void ShadeGouraud(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
+                  const Lighting& lighting, Frame& frame);
+void ShadePhong(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
+                const Lighting& lighting, Frame& frame);
+
+// The triangle shaded as lighting.shading says.
+void ShadeTriangle(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
+                   const Lighting& lighting, Frame& frame);

@@ -4,111 +4,15 @@
 #include <cmath>
 #include <optional>
 
-#include "depth_buffer.h"
-#include "scene_rendering.h"
-
-namespace {
-
-// The orientation (columns right, up, forward) of a view looking along `forward`.
-glm::dmat4 LookAlong(const Vec3& forward) {
-  const Vec3 f = glm::normalize(forward);
-  const Vec3 helper = std::abs(f.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-  const Vec3 right = glm::normalize(glm::cross(helper, f));
-  const Vec3 up = glm::cross(f, right);
-  return glm::dmat4(glm::dvec4(right, 0), glm::dvec4(up, 0), glm::dvec4(f, 0),
-                    glm::dvec4(0, 0, 0, 1));
-}
-
-// The depths a DepthBuffer holds, row by row from the top.
-std::vector<double> DepthsOf(const DepthBuffer& depth_buffer, int size) {
-  std::vector<double> depths;
-  depths.reserve(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
-  for (int y = size / 2 - 1; y >= -size / 2; --y) {
-    for (int x = -size / 2; x < size / 2; ++x) {
-      depths.push_back(depth_buffer.At(x, y));
-    }
-  }
-  return depths;
-}
-
-// A point light's view: every instance in the view's space, clipped like the
-// camera's, drawn with chapter 12's depth-buffered DrawFilledTriangle (the colours
-// are not kept). No back faces are culled: a surface that faces away from the light
-// casts a shadow too.
-DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& world_to_view, int size) {
-  Canvas canvas(size, size);
-  const Viewport viewport{2, 2, 1};
-  DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  CameraSpaceScene view_scene;
-  for (const Instance& I : scene.instances) {
-    view_scene.instances.push_back(
-        TransformToCameraSpace(I, world_to_view * MakeTransformMatrix(I.transform)));
-  }
-  for (const CameraSpaceInstance& I :
-       ClipScene(view_scene, ClippingPlanes(viewport.distance)).instances) {
-    for (const Triangle& T : I.model.triangles) {
-      const auto& V = I.model.vertices;
-      DrawFilledTriangle(ProjectVertex(V[T.v[0]], canvas, viewport),
-                         ProjectVertex(V[T.v[1]], canvas, viewport),
-                         ProjectVertex(V[T.v[2]], canvas, viewport), V[T.v[0]].z, V[T.v[1]].z,
-                         V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
-    }
-  }
-  return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
-}
-
-// A directional light's view: orthographic, so a point (x, y, z) of the view's
-// space lands at (x, y) scaled to the canvas, whatever its z; z is linear across the
-// canvas then, and the depth buffer stores z itself.
-DepthMap OrthographicView(const Scene& scene, const Vec3& direction, int size) {
-  std::vector<Vec3> everything;
-  for (const Instance& I : scene.instances) {
-    for (const Vec3& V : I.model->vertices) {
-      everything.push_back(ApplyTransform(V, I.transform));
-    }
-  }
-  const BoundingSphere bounds = ComputeBoundingSphere(everything);
-  const Vec3 forward = -glm::normalize(direction);
-  const glm::dmat4 world_to_view =
-      MakeCameraMatrix(bounds.center - forward * (bounds.radius + 1), LookAlong(forward));
-  Canvas canvas(size, size);
-  const Viewport viewport{2 * bounds.radius, 2 * bounds.radius, 1};
-  DepthBuffer depth_buffer(canvas, DepthValue::kZ);
-  for (const Instance& I : scene.instances) {
-    const glm::dmat4 M = world_to_view * MakeTransformMatrix(I.transform);
-    std::vector<Vec3> V;
-    std::vector<Point> projected;
-    for (const Vec3& vertex : I.model->vertices) {
-      V.push_back(cgfs::ToCartesian(M * glm::dvec4(vertex, 1.0)));
-      projected.push_back(ViewportToCanvas(V.back().x, V.back().y, canvas, viewport));
-    }
-    for (const Triangle& T : I.model->triangles) {
-      DrawFilledTriangle(projected[T.v[0]], projected[T.v[1]], projected[T.v[2]], V[T.v[0]].z,
-                         V[T.v[1]].z, V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
-    }
-  }
-  return {size, DepthsOf(depth_buffer, size), world_to_view, true, bounds.radius};
-}
-
-}  // namespace
-
-ShadowMap RenderShadowMap(const Scene& scene, const Light& light, int size) {
-  ShadowMap shadow_map;
-  if (light.type == LightType::kPoint) {
-    shadow_map.light_position = light.position;
-    for (int f = 0; f < 6; ++f) {
-      const glm::dmat4 orientation = CubeFaceOrientation(static_cast<CubeFace>(f));
-      shadow_map.views.push_back(
-          PerspectiveView(scene, MakeCameraMatrix(light.position, orientation), size));
-    }
-  } else if (light.type == LightType::kDirectional) {
-    shadow_map.views.push_back(OrthographicView(scene, light.direction, size));
-  }
-  return shadow_map;
-}
-
 bool InShadow(double stored_depth, double depth, double bias) {
   return stored_depth < depth - bias;
+}
+
+double ShadowBias(const ShadowMapping& settings, double cos_angle) {
+  const double sin_angle = std::sqrt(std::max(0.0, 1 - cos_angle * cos_angle));
+  const double slope =
+      cos_angle * kMaxBiasSlope > sin_angle ? sin_angle / cos_angle : kMaxBiasSlope;
+  return settings.constant_bias + settings.slope_bias * slope;
 }
 
 double PercentageCloserFilter(const std::array<bool, 4>& in_shadow, double fx, double fy) {
@@ -133,13 +37,10 @@ double StoredDepth(const DepthMap& view, int i, int j) {
   return view.orthographic ? stored : 1 / stored;  // 1 / 0: nothing there, infinitely far
 }
 
-}  // namespace
-
-namespace {
-
-// Where point P falls on a shadow map: the view, P's depth there, and its place in
-// entries (i + fx, j + fy) from the view's top-left entry centre, as for a cube
-// map's face (perspective) or scaled (orthographic). Empty if outside every view.
+// Where point P falls on a shadow map: the view, P's depth there, and its place
+// (tx, ty) among the entries, entry (i, j) at the point (i, j). A view's (s, t), as a
+// cube map's face has them (or, orthographic, scaled from x and y), is at
+// (s size, t size - 1), as SampleCubeMap reads a face. Empty if outside every view.
 struct ViewPoint {
   const DepthMap* view = nullptr;
   double depth = 0;
@@ -162,13 +63,13 @@ std::optional<ViewPoint> FindInShadowMap(const ShadowMap& shadow_map, const Vec3
       return std::nullopt;
     }
   } else {
-    const CubeMapPoint point = CubeMapLookup(P - shadow_map.light_position);
+    const CubeMapPoint point = CubeMapLookup(P - shadow_map.light.position);
     view = &shadow_map.views[static_cast<std::size_t>(point.face)];
     s = point.s;
     t = point.t;
   }
   const double depth = cgfs::ToCartesian(view->world_to_view * glm::dvec4(P, 1.0)).z;
-  return ViewPoint{view, depth, s * view->size - 0.5, t * view->size - 0.5};
+  return ViewPoint{view, depth, s * view->size, t * view->size - 1};
 }
 
 // An entry's width at the point: the view's width there over its entries.
@@ -177,23 +78,21 @@ double EntryWidth(const ViewPoint& point) {
   return (view.orthographic ? 2 * view.half_width : 2 * point.depth) / view.size;
 }
 
+// The unit vector from P towards the light.
+Vec3 TowardsLight(const Light& light, const Vec3& P) {
+  return glm::normalize(light.type == LightType::kPoint ? light.position - P : light.direction);
+}
+
 }  // namespace
 
-// The bias is applied twice, both in entry widths at the point: the point is moved
-// off its surface along its normal N before it is looked up (so that a surface at a
-// grazing angle to the light, whose depth changes fast across an entry, is not
-// compared with itself), and the comparison allows that much difference.
-double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N,
-                       const ShadowMapping& settings) {
-  const std::optional<ViewPoint> on_surface = FindInShadowMap(shadow_map, P);
-  if (!on_surface) {
-    return 1;
-  }
-  const double bias = settings.bias * EntryWidth(*on_surface);
-  const std::optional<ViewPoint> point = FindInShadowMap(shadow_map, P + N * bias);
+double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N) {
+  const std::optional<ViewPoint> point = FindInShadowMap(shadow_map, P);
   if (!point) {
     return 1;
   }
+  const ShadowMapping& settings = shadow_map.settings;
+  const double cos_angle = glm::dot(N, TowardsLight(shadow_map.light, P));
+  const double bias = ShadowBias(settings, cos_angle) * EntryWidth(*point);
   const DepthMap& view = *point->view;
   if (!settings.percentage_closer_filtering) {
     const int i = static_cast<int>(std::floor(point->tx + 0.5));

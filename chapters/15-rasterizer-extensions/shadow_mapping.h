@@ -1,8 +1,10 @@
 // Chapter 15, "Shadow Mapping" (prose only in the book): what each light sees,
 // rendered beforehand as depths, so that shading a point can ask whether something
-// is closer to the light than it is.
+// is closer to the light than it is. The views themselves are rendered beside
+// RenderScene (scene_rendering.h).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -10,10 +12,34 @@
 #include "environment_mapping.h"
 #include "lighting.h"
 
-struct Scene;
+// How the shading reads a shadow map.
+struct ShadowMapping {
+  int size = 256;  // entries per side of each view
+  // The bias: how much closer to the light the map must hold something before a point
+  // counts as shadowed, in entry widths at the point's distance from the light. Each
+  // entry holds the depth of the surface at the entry's centre; a point elsewhere in
+  // the entry, on a surface that slopes away from the light at an angle a (between its
+  // normal and the light), lies up to (its distance from the centre) x tan(a) deeper.
+  // Without a bias the surface shadows itself in streaks ("shadow acne"), worst where
+  // the light grazes it, where tan(a) is large; so the bias has a constant part and a
+  // part that grows with tan(a) (slope-scaled), the slope capped at kMaxBiasSlope. Too
+  // much bias and shadows start a little away from the objects casting them
+  // ("peter-panning").
+  double constant_bias = 1;
+  double slope_bias = 2;
+  // Percentage-closer filtering: the comparison made with the four entries around
+  // the point and the results weighted as GetTexel weighs texels, so that
+  // visibility goes from 0 to 1 across a shadow's edge instead of jumping.
+  bool percentage_closer_filtering = false;
+};
+
+// The steepest slope the bias allows for: 10, an angle of 84 degrees between the
+// normal and the light.
+inline constexpr double kMaxBiasSlope = 10;
 
 // One view from a light: the depth of the nearest surface at each of size x size
-// entries, row by row from the top. A point light's views are perspective (90
+// entries, row by row from the top, entry (i, j) the canvas pixel (i - size/2,
+// size/2 - 1 - j) of the view's render. A point light's views are perspective (90
 // degrees, like a cube map's faces) and store 1/z; a directional light's view is
 // orthographic (parallel to the light) and stores z.
 struct DepthMap {
@@ -25,38 +51,20 @@ struct DepthMap {
 };
 
 // All a light's views: six for a point light (indexed by CubeFace), one for a
-// directional light, none for ambient light.
+// directional light, none for ambient light; and how they are read.
 struct ShadowMap {
   std::vector<DepthMap> views;
-  Vec3 light_position{0, 0, 0};  // a point light's
+  Light light;  // in world space
+  ShadowMapping settings;
 };
-
-// The scene's depths as `light` (in world space) sees them, size x size per view.
-// A directional light's single view covers a sphere around every instance's
-// vertices, seen from beyond it.
-ShadowMap RenderShadowMap(const Scene& scene, const Light& light, int size);
 
 // The comparison: a point `depth` away from the light is in shadow when the map
-// holds something closer, by more than `bias`. The bias allows for the map's own
-// errors: the surface a point lies on was stored at the depth of the entry's centre,
-// which on a slope is a little closer or farther than the point itself, and
-// without the bias the surface would shadow itself in stripes ("shadow acne").
+// holds something closer, by more than `bias`.
 bool InShadow(double stored_depth, double depth, double bias);
 
-// How the shading reads a shadow map.
-struct ShadowMapping {
-  int size = 256;  // entries per side of each view
-  // The bias, in entry widths at the point's distance from the light: each entry
-  // holds the depth at its centre, and a surface sloping away from the light is
-  // (entry width) x (slope) deeper elsewhere in the entry. Too small a bias: acne;
-  // too large: shadows that start a little away from the objects casting them
-  // ("peter-panning"). See LightVisibility.
-  double bias = 1.5;
-  // Percentage-closer filtering: the comparison made with the four entries around
-  // the point and the results weighted as GetTexel weighs texels (chapter 14), so
-  // that visibility goes from 0 to 1 across a shadow's edge instead of jumping.
-  bool percentage_closer_filtering = false;
-};
+// The bias at a point whose normal makes an angle with the light whose cosine is
+// `cos_angle`, in entry widths (ShadowMapping).
+double ShadowBias(const ShadowMapping& settings, double cos_angle);
 
 // Percentage-closer filtering of four comparisons (in shadow or not) of the entries
 // top-left, top-right, bottom-left and bottom-right of a point, fx and fy its
@@ -66,5 +74,4 @@ double PercentageCloserFilter(const std::array<bool, 4>& in_shadow, double fx, d
 // How much of the light whose shadow map this is reaches world-space point P of a
 // surface whose unit normal there is N, in [0, 1]: 0 or 1, or in between with
 // filtering. Points outside every view are lit.
-double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N,
-                       const ShadowMapping& settings);
+double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N);

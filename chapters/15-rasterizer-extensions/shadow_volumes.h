@@ -7,7 +7,14 @@
 #include <vector>
 
 #include "clipping.h"
+#include "depth_buffer.h"
 #include "stencil_buffer.h"
+
+// "Stencil Shadows": where along the view ray the stencil counts the volumes' faces.
+enum class ShadowVolumeCounting {
+  kDepthFail,  // behind the surface ("Carmack's reverse"): right wherever the camera is
+  kDepthPass,  // in front of it, the first idea: wrong when the camera is in a shadow
+};
 
 // Whether a triangle with corner A and normal N faces the light: <N, L> > 0, with L
 // from A towards a point light, or a directional light's own direction (as

@@ -1,7 +1,7 @@
 // Chapter 13, "Normals": a model whose normals are not its triangles' normals.
 #pragma once
 
-#include "scene_rendering.h"
+#include "scene.h"
 
 // A unit sphere centred on the origin, every triangle of one colour, divs rings of
 // divs vertices each from the south pole (y = -1) to the north pole (y = 1), equally

@@ -3,28 +3,29 @@
 // pixels they may draw.
 #pragma once
 
-#include <vector>
-
-#include "cgfs/canvas.h"
-
-using cgfs::Canvas;
+#include "canvas_grid.h"
 
 class StencilBuffer {
  public:
   // Every pixel 0.
-  explicit StencilBuffer(const Canvas& canvas);
+  explicit StencilBuffer(const cgfs::Canvas& canvas) : counts_(canvas, 0) {}
 
-  // What (x, y) holds; 0 for a pixel off the canvas. Canvas coordinates, mapped as
-  // PutPixel maps them.
-  int At(int x, int y) const;
+  // What (x, y) holds; 0 for a pixel off the canvas.
+  int At(int x, int y) const {
+    const int* count = counts_.Find(x, y);
+    return count ? *count : 0;
+  }
 
   // Adds `delta` to (x, y); pixels off the canvas are ignored.
-  void Add(int x, int y, int delta);
+  void Add(int x, int y, int delta) {
+    if (int* count = counts_.Find(x, y)) {
+      *count += delta;
+    }
+  }
 
   // Every pixel back to 0.
-  void Clear();
+  void Clear() { counts_.Fill(0); }
 
  private:
-  const Canvas* canvas_;
-  std::vector<int> counts_;
+  CanvasGrid<int> counts_;
 };

@@ -1,10 +1,7 @@
 #include "optimizations.h"
 
 #include <algorithm>
-#include <sstream>
 #include <thread>
-
-#include "cgfs/error.h"
 
 Optimizations AllOptimizations() {
   Optimizations all;
@@ -13,35 +10,17 @@ Optimizations AllOptimizations() {
   return all;
 }
 
-Optimizations ParseOptimizations(const std::string& list) {
-  if (list == "none") {
-    return {};
-  }
-  if (list == "all") {
-    return AllOptimizations();
-  }
+Optimizations OptimizationsNamed(const std::vector<std::string>& names) {
+  const Optimizations all = AllOptimizations();
   Optimizations chosen;
-  std::istringstream names(list);
-  std::string name;
-  bool any = false;
-  while (std::getline(names, name, ',')) {
-    any = true;
-    if (name == "threads") {
-      chosen.threads = AllOptimizations().threads;
+  for (const std::string& name : names) {
+    if (name == "all") {
+      chosen = all;
+    } else if (name == "threads") {
+      chosen.threads = all.threads;
     } else if (name == "bound") {
       chosen.bound = true;
-    } else {
-      throw cgfs::UsageError("--optimizations: unknown '" + name +
-                             "'; use none, all, or a comma list of threads, bound");
     }
   }
-  if (!any || list.back() == ',') {
-    throw cgfs::UsageError("--optimizations: '" + list + "' is not a list of optimisations");
-  }
-  return chosen;
-}
-
-Optimizations& ChosenOptimizations() {
-  static Optimizations chosen = AllOptimizations();
   return chosen;
 }

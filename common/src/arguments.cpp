@@ -7,6 +7,7 @@
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include "cgfs/error.h"
 
@@ -31,6 +32,15 @@ bool ParseArguments(CLI::App& app, int argc, const char* const* argv) {
 void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
                    const std::string& help, const std::string& type_name) {
   app.add_option("--" + name, value, help)->type_name(type_name);
+}
+
+void AddListOption(CLI::App& app, const std::string& name, std::vector<std::string>& values,
+                   const std::string& help, const std::string& type_name,
+                   const std::vector<std::string>& allowed) {
+  app.add_option("--" + name, values, help)
+      ->type_name(type_name)
+      ->delimiter(',')
+      ->check(CLI::IsMember(allowed));
 }
 
 void AddIntOption(CLI::App& app, const std::string& name, int& value, const std::string& help,

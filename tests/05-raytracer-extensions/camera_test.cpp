@@ -26,7 +26,7 @@ TEST_CASE("CameraRayDirection turns the chapter-2 direction with the camera", "[
 }
 
 TEST_CASE("pinned pixels of Figure 5-1, the camera at (3, 0, 1) turned 45 degrees", "[figures]") {
-  const Canvas canvas = RenderFigureNamed(Figures(), "fig-5-1-camera");
+  const Canvas canvas = RenderFigureNamed(Figures({}), "fig-5-1-camera");
   CHECK(canvas.GetPixel(0, -150) == Rgb8{90, 4, 9});
   CHECK(canvas.GetPixel(-250, 0) == Rgb8{0, 94, 0});
   CHECK(canvas.GetPixel(250, 0) == Rgb8{0, 0, 135});
@@ -41,7 +41,7 @@ TEST_CASE("RenderScene with the camera at the origin draws chapter 4's Figure 4-
   // Everything the chapter adds (objects behind an interface, the camera, the
   // switches) leaves the old picture as it was, byte for byte.
   Canvas canvas(600, 600);
-  RenderScene(SceneReflections(), 3, canvas);
+  RenderScene(SceneReflections(), 3, canvas, AllOptimizations());
   CHECK(canvas.GetImage() ==
         cgfs::ReadImage(GoldenFile("04-shadows-reflections", "fig-4-8-reflections")));
 }

@@ -10,15 +10,15 @@ using cgfs::test::CheckAgainstGolden;
 using cgfs::test::RenderFigureNamed;
 
 TEST_CASE("golden images of every figure", "[figures]") {
-  for (const cgfs::Figure& figure : Figures()) {
+  for (const cgfs::Figure& figure : Figures({})) {
     SECTION(figure.name) {
-      CheckAgainstGolden(CGFS_CHAPTER, Figures(), figure.name);
+      CheckAgainstGolden(CGFS_CHAPTER, Figures({}), figure.name);
     }
   }
 }
 
 TEST_CASE("pinned pixels: the Death Star's crater has the small sphere's colour", "[figures]") {
-  const Canvas canvas = RenderFigureNamed(Figures(), "csg-death-star");
+  const Canvas canvas = RenderFigureNamed(Figures({}), "csg-death-star");
   const Rgb8 crater = canvas.GetPixel(-100, 90);
   const Rgb8 hull = canvas.GetPixel(100, -60);
   CHECK(crater.b > crater.r);  // (90, 90, 100): a bluish grey
@@ -30,7 +30,7 @@ TEST_CASE("pinned pixels: the magnifying glass shows fewer, larger spheres", "[f
   // Through the lens the wall's spheres are about four times as large: along a row
   // through the middle, red spheres begin and end far less often inside the lens
   // than outside it.
-  const Canvas canvas = RenderFigureNamed(Figures(), "refraction-magnifying-glass");
+  const Canvas canvas = RenderFigureNamed(Figures({}), "refraction-magnifying-glass");
   auto red = [&](int x) {
     const Rgb8 pixel = canvas.GetPixel(x, 0);
     return pixel.r > pixel.g + 80;

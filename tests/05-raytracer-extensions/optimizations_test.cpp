@@ -4,7 +4,6 @@
 
 #include <string>
 
-#include "cgfs/error.h"
 #include "golden.h"
 #include "meshes.h"
 #include "printing.h"
@@ -14,46 +13,29 @@ using cgfs::test::FindFigure;
 
 namespace {
 
-// Sets the optimisations the figures are drawn with, for as long as it lives.
-class ChosenFor {
- public:
-  explicit ChosenFor(const Optimizations& optimizations) : saved_(ChosenOptimizations()) {
-    ChosenOptimizations() = optimizations;
-  }
-  ~ChosenFor() { ChosenOptimizations() = saved_; }
-  ChosenFor(const ChosenFor&) = delete;
-  ChosenFor& operator=(const ChosenFor&) = delete;
-
- private:
-  Optimizations saved_;
-};
-
 cgfs::Image Draw(const std::string& figure, int side, const Optimizations& optimizations) {
-  const ChosenFor chosen(optimizations);
-  return cgfs::RenderFigure(FindFigure(Figures(), figure), side, side).GetImage();
+  return cgfs::RenderFigure(FindFigure(Figures({optimizations}), figure), side, side).GetImage();
 }
 
 }  // namespace
 
-TEST_CASE("ParseOptimizations: none, all, and lists", "[optimizations]") {
-  const Optimizations none = ParseOptimizations("none");
+TEST_CASE("OptimizationsNamed: none, all, and lists", "[optimizations]") {
+  const Optimizations none = OptimizationsNamed({"none"});
   CHECK(none.threads == 1);
   CHECK_FALSE(none.cache);
   CHECK_FALSE(none.bvh);
-  const Optimizations all = ParseOptimizations("all");
+  const Optimizations all = OptimizationsNamed({"all"});
   CHECK(all.threads >= 1);
   CHECK(all.cache);
   CHECK(all.shadow_any_hit);
   CHECK(all.shadow_coherence);
   CHECK(all.bvh);
   CHECK_FALSE(all.subsampling);  // approximate, so never part of "all"
-  const Optimizations some = ParseOptimizations("bvh,subsampling");
+  const Optimizations some = OptimizationsNamed({"bvh", "subsampling"});
   CHECK(some.bvh);
   CHECK(some.subsampling);
   CHECK_FALSE(some.cache);
-  CHECK_THROWS_AS(ParseOptimizations("bvh,fast"), cgfs::UsageError);
-  CHECK_THROWS_AS(ParseOptimizations(""), cgfs::UsageError);
-  CHECK_THROWS_AS(ParseOptimizations("bvh,"), cgfs::UsageError);
+  CHECK(OptimizationsNamed({"all", "subsampling"}).subsampling);  // together
 }
 
 TEST_CASE("every exact optimisation draws every figure byte for byte as none does",
@@ -61,14 +43,14 @@ TEST_CASE("every exact optimisation draws every figure byte for byte as none doe
   std::vector<std::pair<std::string, Optimizations>> switches;
   for (const char* name :
        {"threads", "cache", "shadow-any-hit", "shadow-coherence", "bvh", "all"}) {
-    Optimizations optimizations = ParseOptimizations(name);
+    Optimizations optimizations = OptimizationsNamed({name});
     if (optimizations.threads != 1 || std::string(name) == "threads") {
       optimizations.threads = 3;  // more workers than this machine may have cores: the same
     }
     switches.emplace_back(name, optimizations);
   }
 
-  for (const cgfs::Figure& figure : Figures()) {
+  for (const cgfs::Figure& figure : Figures({})) {
     // Without the hierarchy the big scenes take a while: draw them small.
     const bool big = figure.name == "sphere-field-10000" || figure.name == "sphere-field-100000" ||
                      figure.name == "torus-mesh";

@@ -15,8 +15,8 @@ TEST_CASE("DrawSubsampled: Figure 5-1 within the stated tolerance of the full re
   // the traced pixels (even x and y) are exact. (Here none differ at all: Figure 5-1
   // has nothing thinner than two pixels; the wires below show what can go wrong.)
   Canvas full(600, 600);
-  RenderScene(SceneCamera(), 3, full);
-  Optimizations subsampled = ChosenOptimizations();
+  RenderScene(SceneCamera(), 3, full, AllOptimizations());
+  Optimizations subsampled = AllOptimizations();
   subsampled.subsampling = true;
   Canvas approximate(600, 600);
   RenderScene(SceneCamera(), 3, approximate, subsampled);
@@ -34,8 +34,8 @@ TEST_CASE("DrawSubsampled: Figure 5-1 within the stated tolerance of the full re
 }
 
 TEST_CASE("DrawSubsampled loses the wires under two pixels wide", "[sampling]") {
-  const Canvas full = RenderFigureNamed(Figures(), "thin-wires");
-  const Canvas approximate = RenderFigureNamed(Figures(), "subsampling-thin-wires");
+  const Canvas full = RenderFigureNamed(Figures({}), "thin-wires");
+  const Canvas approximate = RenderFigureNamed(Figures({}), "subsampling-thin-wires");
   // Along one row, count the black pixels of each wire: the thinnest ones lose
   // pixels where they cross a column that was skipped.
   long black_full = 0;
@@ -53,17 +53,17 @@ TEST_CASE("DrawSubsampled loses the wires under two pixels wide", "[sampling]") 
 
 TEST_CASE("RenderSceneSupersampled: one ray per pixel is RenderScene", "[sampling]") {
   Canvas plain(64, 64);
-  RenderScene(SceneCamera(), 3, plain);
+  RenderScene(SceneCamera(), 3, plain, AllOptimizations());
   Canvas one(64, 64);
-  RenderSceneSupersampled(SceneCamera(), 3, 1, one);
+  RenderSceneSupersampled(SceneCamera(), 3, 1, one, AllOptimizations());
   CHECK(one.GetImage() == plain.GetImage());
 }
 
 TEST_CASE("RenderSceneSupersampled: edges get colours in between", "[sampling]") {
   // Across the top edge of the green sphere in Figure 5-1, one ray per pixel jumps
   // from black to green; sixteen rays put pixels in between.
-  const Canvas one = RenderFigureNamed(Figures(), "fig-5-1-camera");
-  const Canvas sixteen = RenderFigureNamed(Figures(), "supersampling-16");
+  const Canvas one = RenderFigureNamed(Figures({}), "fig-5-1-camera");
+  const Canvas sixteen = RenderFigureNamed(Figures({}), "supersampling-16");
   int between_one = 0;
   int between_sixteen = 0;
   for (int y = 60; y < 120; ++y) {
@@ -77,7 +77,7 @@ TEST_CASE("RenderSceneSupersampled: edges get colours in between", "[sampling]")
 
 TEST_CASE("RenderSceneAdaptive subdivides edges only", "[sampling]") {
   Canvas canvas(600, 600);
-  const long subdivided = RenderSceneAdaptive(SceneCamera(), 3, canvas);
+  const long subdivided = RenderSceneAdaptive(SceneCamera(), 3, canvas, AllOptimizations());
   CHECK(subdivided > 1000);            // every outline
   CHECK(subdivided < 600 * 600 / 10);  // but not the smooth insides
 }

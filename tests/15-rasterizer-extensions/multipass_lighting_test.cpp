@@ -31,8 +31,24 @@ TEST_CASE("the passes of chapter 13's scene add up to the one-pass image", "[mul
   Canvas passes(600, 600);
   Extensions extensions;
   extensions.multipass_lighting = true;
-  RenderScene(SceneShading(), passes, {}, {}, extensions);
+  RenderScene(SceneShading(), passes, {}, extensions);
   const cgfs::Comparison comparison = cgfs::CompareImages(one_pass.GetImage(), passes.GetImage());
   CHECK(comparison.max_channel_difference <= 1);
   CHECK(comparison.changed_pixels < 600 * 600 / 100);
+}
+
+TEST_CASE("in passes, the reflection is added once, as the ambient light is", "[multipass]") {
+  // The mirror sphere reflects its cube map in the first pass only: added in every
+  // pass, the reflection would count once per light.
+  const Model crate = TexturedCube(*CrateTexture({}));
+  Extensions one_pass;
+  one_pass.environment_mapping = true;
+  Extensions in_passes = one_pass;
+  in_passes.multipass_lighting = true;
+  Canvas expected(600, 600);
+  RenderScene(SceneMirrorSphere(crate), expected, {}, one_pass);
+  Canvas drawn(600, 600);
+  RenderScene(SceneMirrorSphere(crate), drawn, {}, in_passes);
+  const cgfs::Comparison comparison = cgfs::CompareImages(expected.GetImage(), drawn.GetImage());
+  CHECK(comparison.max_channel_difference <= 1);
 }

@@ -40,29 +40,31 @@ Scene FloorAndCube() {
 }  // namespace
 
 TEST_CASE("a point light's six maps find the cube's shadow on the floor", "[shadow-mapping]") {
-  const ShadowMap map = RenderShadowMap(FloorAndCube(), {LightType::kPoint, 1, {0, 10, 0}}, 128);
-  REQUIRE(map.views.size() == 6);
   ShadowMapping settings;
+  settings.size = 128;
+  ShadowMap map = RenderShadowMap(FloorAndCube(), {LightType::kPoint, 1, {0, 10, 0}}, settings);
+  REQUIRE(map.views.size() == 6);
   const Vec3 up(0, 1, 0);
-  CHECK(LightVisibility(map, {0, 0, 0}, up, settings) == 0);  // under the cube
-  CHECK(LightVisibility(map, {6, 0, 0}, up, settings) == 1);  // beside it
-  CHECK(LightVisibility(map, {0, 3, 0}, up, settings) == 1);  // the cube's top, lit
-  CHECK(LightVisibility(map, {0, 0, -6}, up, settings) == 1);
-  settings.percentage_closer_filtering = true;
-  CHECK(LightVisibility(map, {0, 0, 0}, up, settings) == 0);
-  CHECK(LightVisibility(map, {6, 0, 0}, up, settings) == 1);
+  CHECK(LightVisibility(map, {0, 0, 0}, up) == 0);  // under the cube
+  CHECK(LightVisibility(map, {6, 0, 0}, up) == 1);  // beside it
+  CHECK(LightVisibility(map, {0, 3, 0}, up) == 1);  // the cube's top, lit
+  CHECK(LightVisibility(map, {0, 0, -6}, up) == 1);
+  map.settings.percentage_closer_filtering = true;
+  CHECK(LightVisibility(map, {0, 0, 0}, up) == 0);
+  CHECK(LightVisibility(map, {6, 0, 0}, up) == 1);
 }
 
 TEST_CASE("a directional light's orthographic map does the same", "[shadow-mapping]") {
+  ShadowMapping settings;
+  settings.size = 128;
   const ShadowMap map =
-      RenderShadowMap(FloorAndCube(), {LightType::kDirectional, 1, {}, {0, 1, 0}}, 128);
+      RenderShadowMap(FloorAndCube(), {LightType::kDirectional, 1, {}, {0, 1, 0}}, settings);
   REQUIRE(map.views.size() == 1);
   CHECK(map.views[0].orthographic);
-  const ShadowMapping settings;
   const Vec3 up(0, 1, 0);
-  CHECK(LightVisibility(map, {0, 0, 0}, up, settings) == 0);
-  CHECK(LightVisibility(map, {0.9, 0, -0.9}, up, settings) == 0);  // still under it
-  CHECK(LightVisibility(map, {1.3, 0, 0}, up, settings) == 1);     // straight down, missed
-  CHECK(LightVisibility(map, {0, 3, 0}, up, settings) == 1);
-  CHECK(RenderShadowMap(FloorAndCube(), {LightType::kAmbient, 1}, 16).views.empty());
+  CHECK(LightVisibility(map, {0, 0, 0}, up) == 0);
+  CHECK(LightVisibility(map, {0.9, 0, -0.9}, up) == 0);  // still under it
+  CHECK(LightVisibility(map, {1.3, 0, 0}, up) == 1);     // straight down, missed
+  CHECK(LightVisibility(map, {0, 3, 0}, up) == 1);
+  CHECK(RenderShadowMap(FloorAndCube(), {LightType::kAmbient, 1}, settings).views.empty());
 }

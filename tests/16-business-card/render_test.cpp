@@ -72,10 +72,10 @@ TEST_CASE("the card at 512 x 512 with 64 samples: its statistics and its golden 
 }
 
 TEST_CASE("every figure matches its golden image", "[golden]") {
-  for (const cgfs::Figure& figure : Figures()) {
+  for (const cgfs::Figure& figure : Figures({})) {
     if (figure.name != "business-card") {  // drawn and checked above
       DYNAMIC_SECTION(figure.name) {
-        cgfs::test::CheckAgainstGolden(CGFS_CHAPTER, Figures(), figure.name);
+        cgfs::test::CheckAgainstGolden(CGFS_CHAPTER, Figures({}), figure.name);
       }
     }
   }
@@ -88,7 +88,7 @@ TEST_CASE("threads and the bound leave every pixel as it was", "[render][optimiz
   for (const char* list : {"bound", "threads", "all"}) {
     for (int threads : {2, 7}) {
       INFO(list << ", " << threads << " threads");
-      settings.optimizations = ParseOptimizations(list);
+      settings.optimizations = OptimizationsNamed({list});
       if (settings.optimizations.threads > 1) {
         settings.optimizations.threads = threads;
       }

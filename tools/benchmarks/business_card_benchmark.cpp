@@ -16,7 +16,7 @@ namespace {
 void RenderCard(benchmark::State& state, const std::string& optimizations, int side, int samples) {
   RenderSettings settings;
   settings.samples = samples;
-  settings.optimizations = ParseOptimizations(optimizations);
+  settings.optimizations = OptimizationsNamed({optimizations});
   cgfs::Canvas canvas(side, side);
   for (auto _ : state) {
     Render(canvas, settings);

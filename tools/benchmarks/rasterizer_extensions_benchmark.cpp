@@ -22,7 +22,7 @@ void Render(benchmark::State& state, const cgfs::Figure& figure) {
 }  // namespace
 
 void RegisterAll() {
-  for (const cgfs::Figure& figure : Figures()) {
+  for (const cgfs::Figure& figure : Figures({})) {
     benchmark::RegisterBenchmark(("Stages/" + figure.name).c_str(), Render, figure)
         ->Unit(benchmark::kMillisecond);
   }

@@ -32,10 +32,23 @@ struct Switches {
 // The switches as --optimizations spells them, each alone, and some together.
 std::vector<Switches> EachSwitch() {
   std::vector<Switches> switches;
-  for (const char* name : {"none", "threads", "cache", "shadow-any-hit", "shadow-coherence",
-                           "shadow-any-hit,shadow-coherence", "bvh", "subsampling",
-                           "cache,shadow-any-hit,shadow-coherence,bvh", "all"}) {
-    switches.push_back({name, ParseOptimizations(name)});
+  const std::vector<std::vector<std::string>> lists = {
+      {"none"},
+      {"threads"},
+      {"cache"},
+      {"shadow-any-hit"},
+      {"shadow-coherence"},
+      {"shadow-any-hit", "shadow-coherence"},
+      {"bvh"},
+      {"subsampling"},
+      {"cache", "shadow-any-hit", "shadow-coherence", "bvh"},
+      {"all"}};
+  for (const std::vector<std::string>& names : lists) {
+    std::string name;
+    for (const std::string& each : names) {
+      name += (name.empty() ? "" : ",") + each;
+    }
+    switches.push_back({name, OptimizationsNamed(names)});
   }
   return switches;
 }

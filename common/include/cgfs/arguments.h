@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -24,6 +25,13 @@ void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
 // The same for a whole number: `--name N`, accepted only in [min, max].
 void AddIntOption(CLI::App& app, const std::string& name, int& value, const std::string& help,
                   const std::string& type_name, int min, int max);
+
+// The same for a comma list of names, each one of `allowed`: `--name a,b,c`, in the
+// order given. CLI11 splits the list and reports a name it does not know, or an empty
+// list, as any other error.
+void AddListOption(CLI::App& app, const std::string& name, std::vector<std::string>& values,
+                   const std::string& help, const std::string& type_name,
+                   const std::vector<std::string>& allowed);
 
 // For a chapter whose figures have a size of their own (the business card is
 // 512x512): the --size the chapter program uses when none is given.

@@ -1,0 +1,78 @@
+// Chapter 10, "Describing and Rendering a Scene", the describing part: models,
+// instances, transforms and a camera, under the book's names, and the transforms that
+// take a vertex from a model into the scene and from the scene into the camera's view.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include "lighting.h"
+#include "matrices.h"
+#include "mipmap.h"
+#include "projection.h"
+
+// "Representing a Cube": a triangle is three indices into its model's vertex list, and a
+// colour; "Normals": and the surface's normal at each of its three corners, so that a
+// vertex shared by several triangles can have a different normal in each; "Painting a
+// Crate": and the texture coordinates (u, v) of each corner.
+struct Triangle {
+  std::array<int, 3> v{};
+  Color color{0, 0, 0};
+  std::array<Vec3, 3> normals{};
+  std::array<glm::dvec2, 3> uvs{};
+};
+
+// "Models and Instances": a model is its geometry, in model space. Closed means
+// that from outside only its outer side can be seen ("Back Face Culling"); only a
+// closed model may have its back faces culled.
+struct Model {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> triangles;
+  bool closed = true;
+  double specular = 50;  // chapter 3's specular exponent, for the whole model
+  // The texture painted on every triangle (instead of its colour), or none.
+  const MipmappedTexture* texture = nullptr;
+  // A normal map over the same (u, v), or none; and how much of its surroundings the
+  // model reflects (0..1, like chapter 4's `reflective`).
+  const Texture* normal_map = nullptr;
+  double reflective = 0;
+};
+
+// "Model Transform" (Listing 10-4): applied as scale, then rotation, then translation.
+struct Transform {
+  double scale = 1;
+  glm::dmat4 rotation{1.0};
+  Vec3 translation{0, 0, 0};
+};
+
+// One placement of a model in the scene.
+struct Instance {
+  const Model* model = nullptr;
+  Transform transform;
+};
+
+// "Camera Transform": where the camera is, and which way it looks.
+struct Camera {
+  Vec3 position{0, 0, 0};
+  glm::dmat4 orientation{1.0};
+};
+
+struct Scene {
+  Viewport viewport;
+  Camera camera;
+  std::vector<Instance> instances;
+  std::vector<Light> lights;  // in world space, like the instances
+};
+
+// Listing 10-4: the vertex scaled, then rotated, then translated.
+Vec3 ApplyTransform(const Vec3& vertex, const Transform& transform);
+
+// "The Transform Matrix": I.transform of Listing 10-5, translation * rotation * scale.
+glm::dmat4 MakeTransformMatrix(const Transform& transform);
+
+// Listing 10-5: world space to camera space: the inverse of the camera's translation,
+// then the inverse of its rotation (a rotation's inverse is its transpose).
+glm::dmat4 MakeCameraMatrix(const Vec3& position, const glm::dmat4& orientation);
