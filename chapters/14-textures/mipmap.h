@@ -29,6 +29,7 @@ enum class TextureFilter {
 };
 
 // The colour of the texture at (u, v), where one pixel covers rho texels of the
-// full-size texture.
+// full-size texture. Every level is read at the same place of the texture: its texels
+// stand for the centres of the blocks of level-0 texels they average.
 Color SampleTexture(const MipmappedTexture& texture, double u, double v, double rho,
                     TextureFilter filter);

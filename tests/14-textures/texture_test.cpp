@@ -131,3 +131,26 @@ TEST_CASE("LoadTexture refuses a picture too large to keep as a texture", "[text
   CHECK_THROWS_WITH(LoadTexture(file), Catch::Contains("2049x1, too large for a texture"));
   std::filesystem::remove(file);
 }
+
+TEST_CASE("every mip level is read at the same place of the texture", "[mipmap]") {
+  // A ramp: texel (i, j) is (i, j, 0). Averaging 2x2 blocks keeps it a ramp, so every
+  // level, read where it should be, gives the book's level-0 value at (u, v): u * 256
+  // in red, v * 256 in green. A level read at (u w', v h') would be off by half a block
+  // minus half a texel: 3.5 on level 3.
+  Texture ramp{256, 256, {}};
+  for (int j = 0; j < 256; ++j) {
+    for (int i = 0; i < 256; ++i) {
+      ramp.texels.push_back(Color(i, j, 0));
+    }
+  }
+  const MipmappedTexture chain = BuildMipChain(std::move(ramp));
+  for (const double u : {0.3, 0.5123, 0.7}) {
+    for (int level = 0; level <= 5; ++level) {
+      const double rho = std::pow(2.0, level);  // mipmapping picks this level
+      const Color texel = SampleTexture(chain, u, 1 - u, rho, TextureFilter::kMipmap);
+      INFO("u " << u << ", level " << level);
+      CHECK(texel.r == Approx(u * 256).margin(1e-9));
+      CHECK(texel.g == Approx((1 - u) * 256).margin(1e-9));
+    }
+  }
+}
