@@ -30,13 +30,9 @@ namespace {
 glm::dvec2 CastUV(const Scene& scene, const CastScene& cast_scene, const CastHit& hit) {
   const Triangle& T = scene.instances[static_cast<std::size_t>(hit.instance)]
                           .model->triangles[static_cast<std::size_t>(hit.triangle)];
-  const cgfs::test::CastTriangle* placed = nullptr;
-  for (const auto& each : cast_scene.triangles) {
-    if (each.instance == hit.instance && each.triangle == hit.triangle) {
-      placed = &each;
-      break;
-    }
-  }
+  const cgfs::test::CastTriangle* placed =
+      &cast_scene.triangles[cast_scene.instances[static_cast<std::size_t>(hit.instance)].first +
+                            static_cast<std::size_t>(hit.triangle)];
   const glm::dvec3 e1 = placed->b - placed->a;
   const glm::dvec3 e2 = placed->c - placed->a;
   const glm::dvec3 p = hit.point - placed->a;
