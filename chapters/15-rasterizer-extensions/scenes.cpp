@@ -298,50 +298,16 @@ Extensions With(const Change& change) {
 
 }  // namespace
 
-std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
-  // The crate and its texture live as long as the figures that draw them.
-  const auto crate_texture = CrateTexture(settings);
-  const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
-  const auto draw = [](Scene (*scene)(), Extensions extensions) {
-    return [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, extensions); };
-  };
-  const auto draw_crates = [crate, crate_texture](Scene (*scene)(const Model&),
-                                                  Extensions extensions) {
-    return [crate, crate_texture, scene, extensions](Canvas& canvas) {
-      RenderScene(scene(*crate), canvas, {}, extensions);
-    };
-  };
+namespace {
+
+// "Normal Mapping": Figures 15-1 and 15-2.
+std::vector<cgfs::Figure> NormalMapFigures() {
   const auto draw_square = [](bool light_from_left, bool normal_mapping) {
     return [=](Canvas& canvas) {
       RenderScene(SceneNormalMappedSquare(light_from_left), canvas, {},
                   With([=](Extensions& e) { e.normal_mapping = normal_mapping; }));
     };
   };
-  const auto one_light = [](std::size_t k) {
-    return [k](Canvas& canvas) {
-      Scene scene = SceneShading();
-      scene.lights = {scene.lights[k]};
-      RenderScene(scene, canvas);
-    };
-  };
-  const Extensions environment = With([](Extensions& e) { e.environment_mapping = true; });
-  const Extensions passes = With([](Extensions& e) { e.multipass_lighting = true; });
-  const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
-  const Extensions depth_pass = With([](Extensions& e) {
-    e.shadows = Shadows::kShadowVolumes;
-    e.shadow_volume_counting = ShadowVolumeCounting::kDepthPass;
-  });
-  const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
-  const Extensions maps_pcf = With([](Extensions& e) {
-    e.shadows = Shadows::kShadowMaps;
-    e.shadow_mapping.percentage_closer_filtering = true;
-  });
-  const Extensions everything = With([](Extensions& e) {
-    e.normal_mapping = true;
-    e.environment_mapping = true;
-    e.shadows = Shadows::kShadowMaps;
-    e.shadow_mapping.percentage_closer_filtering = true;
-  });
   return {
       {"fig-15-1a-textured-square", "a square of stone tiles lit from the left: flat",
        draw_square(true, false)},
@@ -352,26 +318,36 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
        draw_square(false, true)},
       {"fig-15-2-normal-map", "the normal map of figure 15-1 as an RGB texture: blue-purple",
        [](Canvas& canvas) { DrawTexture(DiamondNormalMap(), canvas); }},
+  };
+}
+
+// "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
+// one light without shadows, with stencil shadows and with shadow maps.
+std::vector<cgfs::Figure> ShadowFigures() {
+  const auto draw = [](Scene (*scene)(), Extensions extensions) {
+    return [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, extensions); };
+  };
+  const auto one_light = [](std::size_t k) {
+    return [k](Canvas& canvas) {
+      Scene scene = SceneShading();
+      scene.lights = {scene.lights[k]};
+      RenderScene(scene, canvas);
+    };
+  };
+  const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
+  const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
+  return {
       {"fig-15-3a-ambient-pass", "chapter 13's scene lit by its ambient light alone", one_light(0)},
       {"fig-15-3b-directional-pass", "lit by its directional light alone", one_light(1)},
       {"fig-15-3c-point-pass", "lit by its point light alone", one_light(2)},
       {"fig-15-3d-sum-of-passes", "the three passes added up, clamped once: as one pass",
-       draw(SceneShading, passes)},
+       draw(SceneShading, With([](Extensions& e) { e.multipass_lighting = true; }))},
       {"fig-15-4-shadow-volume",
        "a cube's shadow volume for a point light, its edges down to the floor: the shadow",
        [volumes](Canvas& canvas) {
          const Scene scene = SceneCubeOverFloor();
          RenderScene(scene, canvas, {}, volumes);
          DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
-       }},
-      {"environment-map",
-       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
-       draw_crates(SceneMirrorSphere, environment)},
-      {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
-       [crate, crate_texture](Canvas& canvas) {
-         const Scene scene = SceneMirrorSphere(*crate);
-         DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
-                     canvas);
        }},
       {"no-shadows", "chapter 13's objects over a floor, lit from above left, no shadows",
        draw(SceneShadows, {})},
@@ -380,12 +356,18 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
       {"shadow-map", "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
        draw(SceneShadows, maps)},
       {"shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
-       draw(SceneShadows, maps_pcf)},
+       draw(SceneShadows, With([](Extensions& e) {
+              e.shadows = Shadows::kShadowMaps;
+              e.shadow_mapping.percentage_closer_filtering = true;
+            }))},
       {"camera-in-shadow-depth-fail", "the camera inside a shadow volume: depth fail counts right",
        draw(SceneCameraInShadow, volumes)},
       {"camera-in-shadow-depth-pass",
        "the same counted in front of the surface (depth pass): shadow and light swapped",
-       draw(SceneCameraInShadow, depth_pass)},
+       draw(SceneCameraInShadow, With([](Extensions& e) {
+              e.shadows = Shadows::kShadowVolumes;
+              e.shadow_volume_counting = ShadowVolumeCounting::kDepthPass;
+            }))},
       {"shadow-map-directional",
        "a directional light's shadows from one orthographic 512 x 512 map, filtered",
        draw(SceneShadowsDirectional, With([](Extensions& e) {
@@ -393,8 +375,47 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
               e.shadow_mapping.size = 512;
               e.shadow_mapping.percentage_closer_filtering = true;
             }))},
+  };
+}
+
+// "Environment Mapping", and every stage at once. The crate and its texture live as
+// long as the figures that draw them.
+std::vector<cgfs::Figure> EnvironmentFigures(const ChapterSettings& settings) {
+  const auto crate_texture = CrateTexture(settings);
+  const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
+  const auto draw_crates = [crate, crate_texture](Scene (*scene)(const Model&),
+                                                  Extensions extensions) {
+    return [crate, crate_texture, scene, extensions](Canvas& canvas) {
+      RenderScene(scene(*crate), canvas, {}, extensions);
+    };
+  };
+  return {
+      {"environment-map",
+       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
+       draw_crates(SceneMirrorSphere, With([](Extensions& e) { e.environment_mapping = true; }))},
+      {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
+       [crate, crate_texture](Canvas& canvas) {
+         const Scene scene = SceneMirrorSphere(*crate);
+         DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
+                     canvas);
+       }},
       {"everything",
        "textures, a normal-mapped floor, a mirror sphere and filtered shadow maps at once",
-       draw_crates(SceneEverything, everything)},
+       draw_crates(SceneEverything, With([](Extensions& e) {
+                     e.normal_mapping = true;
+                     e.environment_mapping = true;
+                     e.shadows = Shadows::kShadowMaps;
+                     e.shadow_mapping.percentage_closer_filtering = true;
+                   }))},
   };
+}
+
+}  // namespace
+
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  std::vector<cgfs::Figure> figures = NormalMapFigures();
+  for (auto group : {ShadowFigures(), EnvironmentFigures(settings)}) {
+    figures.insert(figures.end(), group.begin(), group.end());
+  }
+  return figures;
 }

@@ -34,15 +34,27 @@ long long TexelCount(const MipmappedTexture& chain) {
 
 TEST_CASE("u and v are not linear on the canvas, u/z and v/z are", "[texture]") {
   // A = (-1, 0, 2) with u = 0, B = (1, 0, 10) with u = 1, d = 1: A' = -300 pixels,
-  // B' = 60. The screen midpoint x' = -0.2 (pixel -120) is 180 pixels from A'.
-  const std::size_t midpoint = 180;
-  CHECK(Interpolate(-300, 0, 60, 1)[midpoint] == Approx(0.5));  // affine: wrong
-  const double u_over_z = Interpolate(-300, 0.0 / 2, 60, 1.0 / 10)[midpoint];
-  const double inv_z = Interpolate(-300, 1.0 / 2, 60, 1.0 / 10)[midpoint];
-  CHECK(u_over_z == Approx(0.05));
-  CHECK(inv_z == Approx(0.3));
-  CHECK(u_over_z / inv_z == Approx(0.166667));  // perspective-correct
-  CHECK(1 / inv_z == Approx(3.333333));         // the true depth there
+  // B' = 60. The screen midpoint x' = -0.2 (pixel -120) is 180 of the 360 pixels from A'
+  // to B'. What each corner carries, carried halfway as the triangle walker carries it,
+  // and the (u, v) a pixel gets back from it:
+  const auto u_halfway = [](TextureInterpolation interpolation) {
+    Texturing texturing;
+    texturing.interpolation = interpolation;
+    Attributes A;
+    A.inv_z = 1.0 / 2;
+    A.uv = CarriedTextureCoordinates({0, 0}, 2, texturing);
+    Attributes B;
+    B.inv_z = 1.0 / 10;
+    B.uv = CarriedTextureCoordinates({1, 0}, 10, texturing);
+    const Attributes halfway = A + (B - A) / 360.0 * 180.0;
+    return std::pair(TextureCoordinates(halfway, texturing).x, halfway);
+  };
+  CHECK(u_halfway(TextureInterpolation::kAffine).first == Approx(0.5));  // wrong
+  const auto [u, carried] = u_halfway(TextureInterpolation::kPerspectiveCorrect);
+  CHECK(carried.uv.x == Approx(0.05));           // u/z
+  CHECK(carried.inv_z == Approx(0.3));           // 1/z
+  CHECK(u == Approx(0.166667));                  // right
+  CHECK(1 / carried.inv_z == Approx(3.333333));  // the true depth there
 }
 
 TEST_CASE("GetTexelNearest: floor(u w), clamped to the last texel", "[texture]") {
