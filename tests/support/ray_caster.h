@@ -111,7 +111,9 @@ LabelImage LabelsOf(const CastImage& cast, const std::function<int(const CastHit
 struct Agreement {
   long counted = 0;
   long agreeing = 0;
-  double Fraction() const { return counted == 0 ? 0 : static_cast<double>(agreeing) / counted; }
+  double Fraction() const {
+    return counted == 0 ? 0 : static_cast<double>(agreeing) / static_cast<double>(counted);
+  }
 };
 
 // The scene of a rasterizer chapter (10 to 15) as the ray caster sees it: every
