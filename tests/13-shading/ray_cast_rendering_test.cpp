@@ -146,9 +146,7 @@ TEST_CASE("Phong shading lights every pixel as the illumination equation does wh
   Canvas canvas(600, 600);
   RenderScene(scene, canvas);
   const auto cast = CastCameraImage(CastSceneOf(scene), CastCameraOf(scene), 600, 600);
-  const auto faces = cgfs::test::LabelsOf(cast, [](const cgfs::test::CastHit& hit) {
-    return hit.instance < 0 ? -1 : hit.instance * 6 + hit.triangle / 2;
-  });
+  const auto faces = cgfs::test::LabelsOf(cast, cgfs::test::CubeFaceOf);
   Agreement agreement;
   for (int y = -300; y < 300; ++y) {
     for (int x = -300; x < 300; ++x) {

@@ -79,7 +79,7 @@ TexelRange TexelsAround(const Scene& scene, const CastScene& cast_scene, const C
       const glm::dvec3 D =
           camera.orientation * glm::dvec3((x + dx) / 600, (y + dy) / 600, camera.distance);
       const auto hit = cgfs::test::Cast(cast_scene, camera.position, D, 1, 1e9, true);
-      if (!hit || hit->instance * 6 + hit->triangle / 2 != face) {
+      if (!hit || cgfs::test::CubeFaceOf(*hit) != face) {
         continue;
       }
       const glm::dvec2 uv = CastUV(scene, cast_scene, *hit);
@@ -105,9 +105,7 @@ Agreement TexelsAgainstRays(TextureInterpolation interpolation) {
   const CastScene cast_scene = CastSceneOf(scene);
   const CastCamera camera = CastCameraOf(scene);
   const CastImage cast = CastCameraImage(cast_scene, camera, 600, 600);
-  const LabelImage faces = LabelsOf(cast, [](const CastHit& hit) {
-    return hit.instance < 0 ? -1 : hit.instance * 6 + hit.triangle / 2;
-  });
+  const LabelImage faces = LabelsOf(cast, cgfs::test::CubeFaceOf);
   Agreement agreement;
   for (int y = -300; y < 300; ++y) {
     for (int x = -300; x < 300; ++x) {

@@ -126,6 +126,12 @@ inline Agreement CompareInstances(const CastImage& cast, const Canvas& drawn, in
   }
   return agreement;
 }
+// The face of a cube (two triangles each, in the cube model's order) a cast ray hit, as
+// one number per face of every instance; -1 for nothing.
+inline int CubeFaceOf(const CastHit& hit) {
+  return hit.instance < 0 ? -1 : hit.instance * 6 + hit.triangle / 2;
+}
+
 // Prints an agreement as a test's context.
 inline std::string Describe(const Agreement& agreement) {
   return std::to_string(agreement.agreeing) + " of " + std::to_string(agreement.counted) +
