@@ -19,7 +19,14 @@ find_package(Threads REQUIRED)
 find_package(PkgConfig QUIET)
 cgfs_require_package(PKG_CONFIG_FOUND pkgconf "pkg-config")
 pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
-cgfs_require_package(STB_FOUND libstb-dev "stb (stb_image, stb_image_write)")
+cgfs_require_package(STB_FOUND libstb-dev "stb (stb_image_write)")
+
+# Untrusted images (students' figures, --texture files, --report folders) are read by
+# decoders made for them, under continuous fuzzing: libpng and libjpeg-turbo.
+find_package(PNG QUIET)
+cgfs_require_package(PNG_FOUND libpng-dev "libpng")
+find_package(JPEG QUIET)
+cgfs_require_package(JPEG_FOUND libjpeg-dev "libjpeg (libjpeg-turbo)")
 
 if(CGFS_BUILD_TESTS)
   find_package(Catch2 2 QUIET CONFIG)

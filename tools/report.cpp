@@ -1,14 +1,12 @@
 #include "report.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
+#include "cgfs/safe_file.h"
 
 namespace cgfs {
 
@@ -190,26 +188,9 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
           "${rows('failed') + rows('unreadable')}, missing: ${rows('missing')}`;\n"
        << "});\n</script>\n</body></html>\n";
 
-  // Several test processes may write the page at once: each writes its own
-  // temporary file and renames it into place.
-  fs::path temporary = html;
-  temporary += "." + std::to_string(::getpid()) + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << page.str();
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw Error("cannot write '" + html.string() + "'");
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, html, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw Error("cannot write '" + html.string() + "': " + error.message());
-  }
+  // Several test processes may write the page at once: each writes its own temporary
+  // and renames it into place (WriteFileSafely).
+  WriteFileSafely(html, page.str());
 }
 
 }  // namespace cgfs

@@ -60,8 +60,8 @@ struct Surface {
 // Where shaded pixels go: the canvas, behind a 1/z depth buffer, and the viewport
 // that maps the scene onto it.
 struct Frame {
-  Frame(Canvas& canvas, DepthBuffer& depth_buffer, const Viewport& viewport)
-      : canvas(canvas), depth_buffer(depth_buffer), viewport(viewport) {}
+  Frame(Canvas& target, DepthBuffer& depths, const Viewport& shown)
+      : canvas(target), depth_buffer(depths), viewport(shown) {}
 
   Canvas& canvas;
   DepthBuffer& depth_buffer;

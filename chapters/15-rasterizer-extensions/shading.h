@@ -73,8 +73,8 @@ struct Surface {
 // that maps the scene onto it; where the camera is in the world (the shadow maps and
 // cube maps are made in world space); and the pass being drawn ("Stencil Shadows").
 struct Frame {
-  Frame(Canvas& canvas, DepthBuffer& depth_buffer, const Viewport& viewport)
-      : canvas(canvas), depth_buffer(depth_buffer), viewport(viewport) {}
+  Frame(Canvas& target, DepthBuffer& depths, const Viewport& shown)
+      : canvas(target), depth_buffer(depths), viewport(shown) {}
 
   Canvas& canvas;
   DepthBuffer& depth_buffer;

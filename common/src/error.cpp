@@ -44,6 +44,10 @@ int RunReportingErrors(std::string_view program, const std::function<int()>& bod
     return Report(program, error.what(), false);
   } catch (const std::bad_alloc&) {
     return Report(program, "out of memory", false);
+  } catch (const std::exception& error) {
+    // Anything else the standard library throws (a thread that cannot be started, a
+    // string too long...): still one line, never std::terminate.
+    return Report(program, error.what(), false);
   }
 }
 

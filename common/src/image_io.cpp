@@ -1,9 +1,9 @@
 #include "cgfs/image_io.h"
 
-#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <cctype>
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -14,6 +14,8 @@
 #include <system_error>
 
 #include "cgfs/error.h"
+#include "cgfs/safe_file.h"
+#include "image_decoders.h"
 
 namespace cgfs {
 
@@ -21,10 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// What ReadImage accepts, checked before anything of that size is allocated: the
-// chapters draw at most 4096x4096, and a plain-text P3 of that size is ~200 MB.
-constexpr long kMaxSide = 1 << 14;
-constexpr long long kMaxPixels = 4096LL * 4096;
+// The largest file ReadImage reads: a plain-text P3 of 4096x4096 is about 200 MB.
 constexpr std::uintmax_t kMaxFileBytes = 256u << 20;
 
 std::string Quoted(const fs::path& path) {
@@ -67,6 +66,8 @@ std::string EncodePpm(const Image& image) {
 
 // A regular file (after symbolic links) of at most kMaxFileBytes: never a FIFO that
 // blocks, a device without end such as /dev/zero, a folder or a symbolic-link loop.
+// The size the file system states is only a hint (files in /proc state 0): the file
+// is read to its end, and refused once past the limit.
 std::string ReadWholeFile(const fs::path& path) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
@@ -79,38 +80,28 @@ std::string ReadWholeFile(const fs::path& path) {
   if (status.type() != fs::file_type::regular) {
     throw Error("cannot read " + Quoted(path) + ": not a regular file");
   }
-  const std::uintmax_t size = fs::file_size(path, error);
-  if (error) {
-    throw Error("cannot read " + Quoted(path) + ": " + error.message());
-  }
-  if (size > kMaxFileBytes) {
-    throw Error(Quoted(path) + " is too large: " + std::to_string(size) + " bytes, at most " +
-                std::to_string(kMaxFileBytes) + " are read");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                        std::fclose);
+  if (!file) {
     throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
   }
-  // Read no more than was announced, even if the file grows meanwhile.
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(size));
-  if (in.bad()) {
-    throw Error("cannot read " + Quoted(path));
+  std::string bytes;
+  char chunk[1 << 16];
+  for (;;) {
+    const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
+    bytes.append(chunk, got);
+    if (bytes.size() > kMaxFileBytes) {
+      throw Error(Quoted(path) + " is too large: more than " + std::to_string(kMaxFileBytes) +
+                  " bytes");
+    }
+    if (got < sizeof chunk) {
+      break;
+    }
   }
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  if (std::ferror(file.get())) {
+    throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
+  }
   return bytes;
-}
-
-// Throws unless a declared image size is one ReadImage accepts.
-void CheckDeclaredSize(long long width, long long height, const fs::path& path,
-                       const std::string& kind) {
-  if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
-      width * height > kMaxPixels) {
-    throw Error(Quoted(path) + " is not a valid " + kind + " image: image size " +
-                std::to_string(width) + "x" + std::to_string(height) +
-                " is out of range (at most " + std::to_string(kMaxSide) + " a side and " +
-                std::to_string(kMaxPixels) + " pixels)");
-  }
 }
 
 // PPM, binary ("P6") or plain ("P3"): a header of whitespace-separated decimal
@@ -126,7 +117,7 @@ class PpmReader {
     const long width = Number("width");
     const long height = Number("height");
     const long maxval = Number("maximum value");
-    CheckDeclaredSize(width, height, path_, "PPM");
+    detail::CheckDeclaredSize(width, height, path_, "PPM");
     if (maxval <= 0 || maxval > 65535) {
       Fail("maximum value " + std::to_string(maxval) + " is out of range 1..65535");
     }
@@ -199,10 +190,12 @@ class PpmReader {
     long value = 0;
     std::size_t digits = 0;
     while (pos_ < bytes_.size() && bytes_[pos_] >= '0' && bytes_[pos_] <= '9') {
-      value = value * 10 + (bytes_[pos_] - '0');
-      if (value > std::numeric_limits<int>::max()) {
+      const int digit = bytes_[pos_] - '0';
+      // Checked before it grows: no number here may pass INT_MAX, whatever long holds.
+      if (value > (std::numeric_limits<int>::max() - digit) / 10) {
         Fail(std::string(what) + " is too large");
       }
+      value = value * 10 + digit;
       ++pos_;
       ++digits;
     }
@@ -218,36 +211,6 @@ class PpmReader {
   std::size_t pos_ = 0;
 };
 
-// PNG or JPEG, which stb_image tells apart by their first bytes; `format` names it
-// in the messages.
-Image DecodeWithStb(const std::string& bytes, const fs::path& path, const std::string& format) {
-  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw Error(Quoted(path) + " is too large");
-  }
-  int width = 0;
-  int height = 0;
-  int channels_in_file = 0;
-  // The header first: a small file can declare a huge image ("decompression bomb").
-  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                            static_cast<int>(bytes.size()), &width, &height,
-                            &channels_in_file) == 0) {
-    throw Error(Quoted(path) + " is not a readable " + format + " image (" + stbi_failure_reason() +
-                ")");
-  }
-  CheckDeclaredSize(width, height, path, format);
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                            static_cast<int>(bytes.size()), &width, &height, &channels_in_file, 3),
-      stbi_image_free);
-  if (!pixels) {
-    throw Error(Quoted(path) + " is not a readable " + format + " image (" + stbi_failure_reason() +
-                ")");
-  }
-  const stbi_uc* first = pixels.get();
-  const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
-  return Image(width, height, std::vector<std::uint8_t>(first, first + size));
-}
-
 }  // namespace
 
 std::string EncodeImage(const Image& image, const fs::path& name) {
@@ -255,36 +218,10 @@ std::string EncodeImage(const Image& image, const fs::path& name) {
 }
 
 void WriteImage(const Image& image, const fs::path& path) {
-  const std::string encoded = EncodeImage(image, path);
-
-  // Write beside the destination, then rename: a failure never leaves a
-  // half-written file where the user's old one was.
-  fs::path temporary = path;
-  temporary += ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw Error("cannot write " + Quoted(path) + ": " + std::strerror(errno));
-    }
-    out.write(encoded.data(), static_cast<std::streamsize>(encoded.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw Error("cannot write " + Quoted(path) + ": write failed");
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw Error("cannot write " + Quoted(path) + ": " + error.message());
-  }
+  WriteFileSafely(path, EncodeImage(image, path));
 }
 
-Image ReadImage(const fs::path& path) {
-  const std::string bytes = ReadWholeFile(path);
+Image DecodeImage(const std::string& bytes, const fs::path& path) {
   if (bytes.empty()) {
     throw Error(Quoted(path) + " is empty");
   }
@@ -292,12 +229,16 @@ Image ReadImage(const fs::path& path) {
     return PpmReader(bytes, path).Read();
   }
   if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) {
-    return DecodeWithStb(bytes, path, "PNG");
+    return detail::DecodePng(bytes, path);
   }
   if (bytes.compare(0, 3, "\xff\xd8\xff") == 0) {
-    return DecodeWithStb(bytes, path, "JPEG");
+    return detail::DecodeJpeg(bytes, path);
   }
   throw Error(Quoted(path) + " is neither a PNG, a JPEG nor a PPM (P3 or P6) image");
+}
+
+Image ReadImage(const fs::path& path) {
+  return DecodeImage(ReadWholeFile(path), path);
 }
 
 }  // namespace cgfs

@@ -172,13 +172,17 @@ TEST_CASE("bad image files are refused with one-line errors", "[image-io]") {
   CHECK_THAT(message_for(folder / "truncated.png"), Catch::Contains("not a readable PNG"));
 
   // A JPEG that stops after its first marker, and one whose header declares a
-  // 65535x65535 image: both refused, the second before anything is decoded.
+  // 30000x30000 image: both refused, the second before anything is decoded.
   WriteText(folder / "truncated.jpg", std::string("\xff\xd8\xff\xe0", 4));
   CHECK_THAT(message_for(folder / "truncated.jpg"), Catch::Contains("not a readable JPEG"));
-  WriteText(folder / "huge.jpg", std::string("\xff\xd8\xff\xc0\x00\x11\x08\xff\xff\xff\xff\x03"
-                                             "\x01\x11\x00\x02\x11\x00\x03\x11\x00",
-                                             21));
-  CHECK_THAT(message_for(folder / "huge.jpg"), Catch::Contains("65535x65535 is out of range"));
+  WriteText(folder / "huge.jpg",
+            std::string("\xff\xd8"                                  // start of image
+                        "\xff\xc0\x00\x11\x08\x75\x30\x75\x30\x03"  // 30000x30000, 3 parts
+                        "\x01\x11\x00\x02\x11\x00\x03\x11\x00"
+                        "\xff\xda\x00\x0c\x03\x01\x00\x02\x11\x03\x11\x00\x3f\x00"  // start of scan
+                        "\xff\xd9",                                                 // end of image
+                        37));
+  CHECK_THAT(message_for(folder / "huge.jpg"), Catch::Contains("30000x30000 is out of range"));
 
   for (const std::string& message :
        {message_for(folder / "text.png"), message_for(folder / "short-ascii.ppm")}) {

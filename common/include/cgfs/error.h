@@ -22,8 +22,9 @@ class UsageError : public Error {
 
 // Runs a program's body and turns whatever goes wrong into one line on standard
 // error, "PROGRAM: error: ...", and exit status 2: our own errors, the command-line
-// library's, the file system's, running out of memory, and a standard output that
-// cannot be written (a full disk, a closed pipe). Otherwise returns the body's status.
+// library's, the file system's, running out of memory, any other std::exception, and a
+// standard output that cannot be written (a full disk, a closed pipe). Otherwise
+// returns the body's status.
 int RunReportingErrors(std::string_view program, const std::function<int()>& body);
 
 }  // namespace cgfs
