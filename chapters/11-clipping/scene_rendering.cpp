@@ -2,6 +2,31 @@
 
 #include "clipping.h"
 
+namespace {
+
+// Listing 10-1 projects every vertex once. After clipping, the list still holds the
+// vertices clipping cut away, behind the projection plane, where ProjectVertex has no
+// answer: only the vertices some triangle uses are projected.
+std::vector<Point> ProjectUsedVertices(const std::vector<Vec3>& vertices,
+                                       const std::vector<Triangle>& triangles, const Canvas& canvas,
+                                       const Viewport& viewport) {
+  std::vector<bool> used(vertices.size(), false);
+  for (const Triangle& T : triangles) {
+    for (const int i : T.v) {
+      used[static_cast<std::size_t>(i)] = true;
+    }
+  }
+  std::vector<Point> projected(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (used[i]) {
+      projected[i] = ProjectVertex(vertices[i], canvas, viewport);
+    }
+  }
+  return projected;
+}
+
+}  // namespace
+
 // Listing 10-1.
 void RenderTriangle(const Triangle& triangle, const std::vector<Point>& projected, Canvas& canvas) {
   DrawWireframeTriangle(projected[triangle.v[0]], projected[triangle.v[1]],
@@ -11,10 +36,7 @@ void RenderTriangle(const Triangle& triangle, const std::vector<Point>& projecte
 // Listing 10-1.
 void RenderObject(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                   Canvas& canvas, const Viewport& viewport) {
-  std::vector<Point> projected;
-  for (const Vec3& V : vertices) {
-    projected.push_back(ProjectVertex(V, canvas, viewport));
-  }
+  const std::vector<Point> projected = ProjectUsedVertices(vertices, triangles, canvas, viewport);
   for (const Triangle& T : triangles) {
     RenderTriangle(T, projected, canvas);
   }

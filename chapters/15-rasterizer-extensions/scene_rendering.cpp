@@ -6,6 +6,31 @@
 #include "back_face_culling.h"
 #include "clipping.h"
 
+namespace {
+
+// Listing 10-1 projects every vertex once. After clipping, the list still holds the
+// vertices clipping cut away, behind the projection plane, where ProjectVertex has no
+// answer: only the vertices some triangle uses are projected.
+std::vector<Point> ProjectUsedVertices(const std::vector<Vec3>& vertices,
+                                       const std::vector<Triangle>& triangles, const Canvas& canvas,
+                                       const Viewport& viewport) {
+  std::vector<bool> used(vertices.size(), false);
+  for (const Triangle& T : triangles) {
+    for (const int i : T.v) {
+      used[static_cast<std::size_t>(i)] = true;
+    }
+  }
+  std::vector<Point> projected(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (used[i]) {
+      projected[i] = ProjectVertex(vertices[i], canvas, viewport);
+    }
+  }
+  return projected;
+}
+
+}  // namespace
+
 // Listing 10-1 with "Depth Buffering" and "Shading".
 void RenderTriangle(const Triangle& triangle, const Model& object,
                     const std::vector<Point>& projected, const CubeMap* environment,
@@ -23,11 +48,8 @@ void RenderTriangle(const Triangle& triangle, const Model& object,
 // Listing 10-1.
 void RenderObject(const Model& object, const CubeMap* environment, const Lighting& lighting,
                   Frame& frame) {
-  std::vector<Point> projected;
-  projected.reserve(object.vertices.size());
-  for (const Vec3& V : object.vertices) {
-    projected.push_back(ProjectVertex(V, frame.canvas, frame.viewport));
-  }
+  const std::vector<Point> projected =
+      ProjectUsedVertices(object.vertices, object.triangles, frame.canvas, frame.viewport);
   for (const Triangle& T : object.triangles) {
     RenderTriangle(T, object, projected, environment, lighting, frame);
   }

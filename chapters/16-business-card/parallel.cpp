@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
+#include "cgfs/error.h"
 #include "cgfs/progress.h"
 
 void ForEachTile(int width, int height, int threads,
@@ -45,13 +48,28 @@ void ForEachTile(int width, int height, int threads,
       next = tiles;
     }
   };
+  // A thread the system cannot start (too many threads, too little memory for their
+  // stacks) stops the drawing: the ones already running are told to stop and joined,
+  // then it is reported in one line.
   std::vector<std::thread> pool;
-  for (int i = 1; i < workers; ++i) {
-    pool.emplace_back(guarded);
+  std::string not_started;
+  for (int i = 1; i < workers && not_started.empty(); ++i) {
+    try {
+      pool.emplace_back(guarded);
+    } catch (const std::system_error& error) {
+      not_started = "cannot start " + std::to_string(workers - 1) + " threads (started " +
+                    std::to_string(i - 1) + "): " + error.code().message();
+      next = tiles;
+    }
   }
-  guarded();
+  if (not_started.empty()) {
+    guarded();
+  }
   for (std::thread& thread : pool) {
     thread.join();
+  }
+  if (!not_started.empty()) {
+    throw cgfs::Error(not_started + "; try fewer with --threads");
   }
   if (failure) {
     std::rethrow_exception(failure);
