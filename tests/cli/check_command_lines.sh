@@ -154,10 +154,16 @@ expect 2 "compare: one argument" "$compare" 02-basic-rays/fig-2-11
 
 # Hostile inputs: each one line and exit 2, within 20 s and 2 GB of address space,
 # and nothing of the user's overwritten.
+# Under AddressSanitizer (CGFS_SANITIZED, the sanitize preset) the address-space limit
+# is left out: the sanitizer reserves terabytes of shadow memory up front.
+limit=(prlimit --as=2000000000 --)
+if [ -n "${CGFS_SANITIZED:-}" ]; then
+  limit=()
+fi
 hostile() {
   local what=$1
   shift
-  expect 2 "hostile: $what" timeout 20 prlimit --as=2000000000 -- "$compare" "$@"
+  expect 2 "hostile: $what" timeout 20 "${limit[@]}" "$compare" "$@"
 }
 good=$figures/fig-2-11.png
 ln -sfn "$work/loop-b" "$work/loop-a"
@@ -194,6 +200,109 @@ hostile "a PNG declaring 10000x10000 pixels" 02-basic-rays/fig-2-11 "$work/bomb.
 cp "$good" "$work/keep.png"
 hostile "--diff onto the image being compared" 02-basic-rays/fig-2-11 "$work/keep.png" --diff "$work/keep.png"
 cmp -s "$good" "$work/keep.png" || { echo "FAIL: the user's image was changed"; failures=$((failures + 1)); }
+
+# Files are written safely (common/include/cgfs/safe_file.h): never over something that
+# is not a regular file, never through what stands at a temporary's name, whole or not
+# at all, and nothing left behind.
+safe=$work/safe
+mkdir -p "$safe/student/02-basic-rays"
+cp "$good" "$safe/student/02-basic-rays/fig-2-11.png"
+# A stand-in for a device node, made in the scratch folder (never a real one); as a
+# user that may not make device nodes, a FIFO stands in for it.
+if mknod "$safe/node" c 1 3 2>/dev/null; then node_kind=device; else mkfifo "$safe/node"; node_kind=FIFO; fi
+node_before=$(stat -c '%F %t:%T' "$safe/node")
+expect 2 "a $node_kind as --diff" timeout 20 "$compare" 02-basic-rays/fig-2-11 "$good" --diff "$safe/node"
+expect 2 "a $node_kind as --html" timeout 20 "$compare" --report "$safe/student" --html "$safe/node"
+mkdir -p "$safe/out"
+if mknod "$safe/out/fig-2-11.png" c 1 3 2>/dev/null; then :; else mkfifo "$safe/out/fig-2-11.png"; fi
+expect 2 "a $node_kind where a figure goes" timeout 20 "$program" --figure fig-2-11 --size 16x16 \
+  --output "$safe/out"
+if [ "$(stat -c '%F %t:%T' "$safe/node")" != "$node_before" ] || [ -f "$safe/out/fig-2-11.png" ]; then
+  echo "FAIL: a $node_kind was replaced by a file"
+  failures=$((failures + 1))
+fi
+mkfifo "$safe/fifo.png"
+expect 2 "a FIFO as --diff, without waiting" timeout 20 "$compare" 02-basic-rays/fig-2-11 "$good" \
+  --diff "$safe/fifo.png"
+# What stands at the old fixed temporary names is never written through or waited on.
+mkdir -p "$safe/planted"
+echo precious >"$safe/victim.txt"
+ln -s ../victim.txt "$safe/planted/fig-2-11.png.partial"
+mkfifo "$safe/planted/fig-2-11-with-ground.png.partial"
+expect 0 "a symbolic link and a FIFO at the old temporaries' names" timeout 20 "$program" \
+  --size 16x16 --output "$safe/planted"
+if [ "$(cat "$safe/victim.txt")" != precious ] || [ ! -L "$safe/planted/fig-2-11.png.partial" ]; then
+  echo "FAIL: a file was written through a symbolic link"
+  failures=$((failures + 1))
+fi
+leftovers() { find "$1" -name '.*.partial' | wc -l; }
+# Two renders into one folder at once: each writes a whole file and says so, and the
+# file is one of the two, whole.
+if [ -n "$chapter16" ]; then
+  "$chapter16" --figure business-card --size 64x64 --samples 2 --seed 1 --output "$safe/seed1" >/dev/null
+  "$chapter16" --figure business-card --size 64x64 --samples 2 --seed 2 --output "$safe/seed2" >/dev/null
+  races=0
+  for attempt in 1 2 3 4 5 6 7 8; do
+    "$chapter16" --figure business-card --size 64x64 --samples 2 --seed 1 --output "$safe/race" \
+      >"$safe/one.out" 2>&1 &
+    first=$!
+    "$chapter16" --figure business-card --size 64x64 --samples 2 --seed 2 --output "$safe/race" \
+      >"$safe/two.out" 2>&1
+    second=$?
+    wait $first
+    first=$?
+    card=$safe/race/business-card.png
+    if [ $first -ne 0 ] || [ $second -ne 0 ] || ! grep -q '^wrote' "$safe/one.out" ||
+      ! grep -q '^wrote' "$safe/two.out" ||
+      ! { cmp -s "$card" "$safe/seed1/business-card.png" ||
+        cmp -s "$card" "$safe/seed2/business-card.png"; } || [ "$(leftovers "$safe/race")" -ne 0 ]; then
+      races=$((races + 1))
+    fi
+  done
+  if [ $races -ne 0 ]; then
+    echo "FAIL: two renders into one folder went wrong in $races of 8 tries"
+    failures=$((failures + 1))
+  else
+    echo "ok: two renders into one folder at once, 8 times: both wrote, the file is one of theirs"
+  fi
+fi
+# SIGTERM while the file is being written (sent as soon as its temporary appears), and
+# while it is being drawn: no temporary left, and the destination the old file, whole.
+mkdir -p "$safe/term"
+"$program" --figure fig-2-11 --size 64x64 --format ppm --output "$safe/term" >/dev/null
+cp "$safe/term/fig-2-11.ppm" "$safe/old.ppm"
+caught=0
+for attempt in 1 2 3 4; do
+  "$program" --figure fig-2-11 --size 4096x4096 --format ppm --output "$safe/term" >/dev/null 2>&1 &
+  victim=$!
+  if [ $attempt -eq 4 ]; then
+    sleep 0.1  # while drawing
+  else
+    for _ in $(seq 500); do
+      [ "$(leftovers "$safe/term")" -ne 0 ] && break
+      sleep 0.01
+    done
+  fi
+  kill -TERM $victim 2>/dev/null
+  wait $victim 2>/dev/null
+  [ $? -eq 143 ] && caught=$((caught + 1))
+  if [ "$(leftovers "$safe/term")" -ne 0 ]; then
+    echo "FAIL: SIGTERM (try $attempt) left a temporary file behind"
+    failures=$((failures + 1))
+  elif ! cmp -s "$safe/term/fig-2-11.ppm" "$safe/old.ppm"; then
+    echo "FAIL: SIGTERM (try $attempt) left the figure other than it was"
+    failures=$((failures + 1))
+  fi
+done
+echo "ok: SIGTERM while writing (3 tries) and drawing: stopped $caught of 4 times, nothing half-written, nothing left"
+
+# Threads that cannot be started (too little address space for their stacks): one line.
+if [ -n "$chapter16" ] && [ -z "${CGFS_SANITIZED:-}" ]; then
+  expect 2 "chapter 16: --threads 256 with 2 GB of address space" prlimit --as=2000000000 -- \
+    "$chapter16" --threads 256 --samples 1 --figure business-card --output "$safe/threads"
+  [ -e "$safe/threads/business-card.png" ] &&
+    { echo "FAIL: a figure was written although its threads failed"; failures=$((failures + 1)); }
+fi
 
 # Write errors on standard output are errors, in every program.
 expect 2 "chapter program: --list into a full disk" bash -c '"$1" --list >/dev/full' _ "$program"
