@@ -82,6 +82,11 @@ if [ -n "$chapter14" ]; then
     --texture "$work/missing.png" --output "$work/bad"
   expect 2 "chapter 14: --texture that is a folder" "$chapter14" --texture "$work" \
     --output "$work/bad"
+  # A file that says it is empty but is not (/proc) is read to its end: its own error.
+  expect 2 "chapter 14: /proc/self/mem as --texture" "$chapter14" --texture /proc/self/mem \
+    --output "$work/bad"
+  grep -q "Input/output error" "$work/stderr" ||
+    { echo "FAIL: /proc/self/mem: $(cat "$work/stderr")"; failures=$((failures + 1)); }
   "$program" --output "$work/wide" --figure fig-2-11 --size 2100x8 >/dev/null
   expect 2 "chapter 14: --texture too large" "$chapter14" \
     --texture "$work/wide/fig-2-11.png" --output "$work/bad"
