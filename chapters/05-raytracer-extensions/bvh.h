@@ -8,6 +8,7 @@
 // (the chapter's README compares the two).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,10 @@ class Bvh {
 
   int NodeCount() const { return static_cast<int>(nodes_.size()); }
   int Depth() const { return depth_; }
+  // The tree's expected cost for a ray that enters the root, by the surface area
+  // heuristic: each node's box tests and each leaf's object tests, weighted by the
+  // chance that a ray through the root enters the node (its area over the root's).
+  double SurfaceAreaCost() const;
 
  private:
   // Nodes are stored depth first: an inner node's first child follows it.
@@ -37,6 +42,9 @@ class Bvh {
     int second_child = 0;
   };
   void Build(int first, int count, const std::vector<Box>& boxes, int depth);
+  int SplitBySurfaceArea(int first, int count, const Box& box, const Box& centres,
+                         const std::vector<Box>& boxes);
+  int SplitAtMedian(int first, int count, const Box& centres, const std::vector<Box>& boxes);
 
   std::vector<const Object*> objects_;
   std::vector<Node> nodes_;
@@ -45,6 +53,23 @@ class Bvh {
 };
 
 // Whether O + tD, t in [t_min, t_max], passes through the box; sets t_enter to the
-// smallest such t. inv_D holds 1/D per axis.
-bool RayHitsBox(const Box& box, const Vec3& O, const Vec3& D, const Vec3& inv_D, double t_min,
-                double t_max, double& t_enter);
+// smallest such t. inv_D holds 1/D per axis. The slabs are intersected one axis after
+// the other; the answer only needs checking at the end, since each axis can only
+// narrow [t_min, t_max]. Inline: a ray tests hundreds of boxes.
+inline bool RayHitsBox(const Box& box, const Vec3& O, const Vec3& D, const Vec3& inv_D,
+                       double t_min, double t_max, double& t_enter) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (D[axis] == 0) {  // parallel to the slab: inside it or never
+      if (O[axis] < box.min[axis] || O[axis] > box.max[axis]) {
+        return false;
+      }
+      continue;
+    }
+    const double t0 = (box.min[axis] - O[axis]) * inv_D[axis];
+    const double t1 = (box.max[axis] - O[axis]) * inv_D[axis];
+    t_min = std::max(t_min, std::min(t0, t1));
+    t_max = std::min(t_max, std::max(t0, t1));
+  }
+  t_enter = t_min;
+  return t_min <= t_max;
+}
