@@ -63,6 +63,15 @@ check "the mistake is planted" grep -q "const double b = glm::dot(CO, D);" "$stu
 run ~/my-cgfs 02
 check "the mistake fails" test $status -eq 1
 check "the failing function is named" says "^  IntersectRaySphere +FAILED"
+check "the failure page is announced" says "^images of the failed figures: "
+
+echo "== the mistake fixed"
+cp "$ours/raytracer.cpp" "$student/"
+run ~/my-cgfs 02
+check "the fixed chapter passes" test $status -eq 0
+check "no failure page is announced after a pass" bash -c '! grep -q "images of the failed" "$1"' \
+  _ "$work/out.txt"
+check "no failure page is left behind" test ! -e build-student/test-output/report.html
 
 echo "== a compile error"
 echo 'int broken = ;' >>"$student/raytracer.cpp"

@@ -17,9 +17,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // <build>/test-output/report.html: every figure whose golden test failed last time it
-// ran, side by side with ours (tools/report.h).
+// ran, side by side with ours (tools/report.h); no page at all once none has.
 void UpdateReport(const fs::path& output) {
   const std::vector<ReportEntry> entries = CompareFolder(output, CGFS_GOLDEN_DIR, false);
+  if (entries.empty()) {
+    std::error_code ignored;
+    fs::remove(output / "report.html", ignored);
+    return;
+  }
   WriteReport(entries, output / "report.html", "Golden tests that failed");
 }
 
