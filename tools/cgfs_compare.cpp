@@ -4,11 +4,13 @@
 //
 // EXPECTED is an image file, or a figure named CHAPTER/FIGURE (for example
 // 02-basic-rays/fig-2-11), which means tests/golden/CHAPTER/FIGURE.png.
-// ACTUAL is the student's image, PNG or PPM (P6 or P3), from any language.
+// ACTUAL is the student's image, PNG or PPM (P6 or P3), from any language; a JPEG is
+// read too, with a note that its compression changes pixels.
 // Prints the numbers, writes a difference image, and exits 0 when the images
 // match under the tolerance of the reference tests, 1 when they do not, and 2
 // on bad input.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <system_error>
@@ -75,6 +77,13 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
 }
 
 // --report: one page for a whole folder; exit 0 when every figure there passes.
+// Whether the file starts as a JPEG does (FF D8 FF), whatever its name says.
+bool IsJpeg(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char start[3] = {};
+  return in.read(start, 3) && start[0] == '\xff' && start[1] == '\xd8' && start[2] == '\xff';
+}
+
 int Report(const fs::path& folder, fs::path html, const fs::path& golden) {
   if (html.empty()) {
     html = folder / "report.html";
@@ -176,8 +185,12 @@ int main(int argc, char** argv) {
     cgfs::WriteImage(comparison.difference, difference_path);
 
     std::cout << "expected: " << expected_file.string() << "\n"
-              << "actual:   " << actual_file.string() << "\n"
-              << cgfs::Describe(comparison, actual.Width(), actual.Height())
+              << "actual:   " << actual_file.string() << "\n";
+    if (IsJpeg(actual_file)) {
+      std::cout << "note: ACTUAL is a JPEG, whose lossy compression changes pixels all over the\n"
+                   "      image; write PNG or PPM to compare figures pixel for pixel\n";
+    }
+    std::cout << cgfs::Describe(comparison, actual.Width(), actual.Height())
               << "difference image: " << difference_path << " (" << cgfs::kDifferenceLegend
               << ")\n";
     return comparison.passed ? 0 : 1;
