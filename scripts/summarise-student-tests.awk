@@ -4,12 +4,39 @@
 # A test belongs to the function its name starts with ("TraceRay keeps ...",
 # "IntersectRaySphere: ..."), else to "golden images", "pinned pixels" or "other tests".
 
+# For a failed test, the reason to print under it: the image diagnosis ("your image
+# is ours moved one row down"), else the first failed check with what its values were.
+function trimmed(text) {
+  sub(/^ +/, "", text)
+  sub(/ +$/, "", text)
+  return text
+}
+
 FNR == NR {
   if ($0 ~ /^[0-9]+\/[0-9]+ Test: /) {
     current = $0
     sub(/^[0-9]+\/[0-9]+ Test: /, "", current)
+    stage = 0
   } else if (match($0, /not written yet: [A-Za-z_0-9]+/)) {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)
+  } else if (current in reason_of) {
+    # one reason a test is enough
+  } else if ($0 ~ /^ *diagnosis: /) {
+    reason_of[current] = trimmed($0)
+  } else if ($0 ~ /: FAILED:$/) {
+    stage = 1
+  } else if (stage == 1 && $0 ~ /^ *explicitly with messages?:/) {
+    stage = 5
+  } else if (stage == 5 && $0 ~ /^  FAIL: / && !(current in message_of)) {
+    message_of[current] = trimmed($0)  # an image's numbers, used when no diagnosis follows
+  } else if (stage == 1 && $0 ~ /^  [A-Z_]+\(/) {
+    check_of[current] = trimmed($0)
+    stage = 2
+  } else if (stage == 2 && $0 ~ /^with expansion:/) {
+    stage = 3
+  } else if (stage == 3 && $0 ~ /^  /) {
+    reason_of[current] = check_of[current] "  is  " trimmed($0)
+    stage = 0
   }
   next
 }
@@ -68,6 +95,11 @@ match($0, /Test +#[0-9]+: /) {
     failed[key]++
     chapter_failed[chapter]++
     failures[key] = failures[key] "      " status ": " test_name "\n"
+    if (name in reason_of) {
+      failures[key] = failures[key] "        " reason_of[name] "\n"
+    } else if (name in message_of) {
+      failures[key] = failures[key] "        " message_of[name] "\n"
+    }
   }
 }
 

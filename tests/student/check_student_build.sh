@@ -64,6 +64,8 @@ run ~/my-cgfs 02
 check "the mistake fails" test $status -eq 1
 check "the failing function is named" says "^  IntersectRaySphere +FAILED"
 check "the failure page is announced" says "^images of the failed figures: "
+check "the failed check and its values are on the console" says "^        (CHECK|REQUIRE).*  is  "
+check "a failed figure's numbers are on the console" says "^        FAIL: [0-9]+ of 360000 pixels differ"
 
 echo "== the mistake fixed"
 cp "$ours/raytracer.cpp" "$student/"
