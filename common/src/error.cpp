@@ -10,6 +10,13 @@
 
 namespace cgfs {
 
+std::string Quoted(const std::filesystem::path& path) {
+  std::string quoted(1, '\'');  // not "'" + string: that trips GCC 12's -Wrestrict (bug 105329)
+  quoted += path.string();
+  quoted += '\'';
+  return quoted;
+}
+
 namespace {
 
 // Everything a program printed must have reached its destination: `--list > /dev/full`

@@ -2,9 +2,9 @@
 
 #include <png.h>
 // jpeglib.h needs FILE and size_t declared before it.
+#include <jpeglib.h>
 #include <cstddef>
 #include <cstdio>
-#include <jpeglib.h>
 
 #include <csetjmp>
 #include <cstring>
@@ -17,13 +17,6 @@ namespace cgfs::detail {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
 
 // Both libraries report errors by calling back, and we leave their code with longjmp.
 // The functions that call them set the jump point and hold nothing that needs a
@@ -114,8 +107,8 @@ void JpegProgress(j_common_ptr cinfo) {
   auto* decompress = reinterpret_cast<j_decompress_ptr>(cinfo);
   if (decompress->input_scan_number > kMaxJpegScans) {
     auto* errors = reinterpret_cast<JpegErrors*>(cinfo->err);
-    std::snprintf(errors->message.text, sizeof errors->message.text,
-                  "more than %d scans", kMaxJpegScans);
+    std::snprintf(errors->message.text, sizeof errors->message.text, "more than %d scans",
+                  kMaxJpegScans);
     std::longjmp(errors->jump, 1);
   }
 }
@@ -165,8 +158,7 @@ void CheckDeclaredSize(long long width, long long height, const fs::path& path,
 
 Image DecodePng(const std::string& bytes, const fs::path& path) {
   PngSource source{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), 0, {}};
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, PngError, PngWarning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, PngError, PngWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   struct Release {
     png_structp* png;

@@ -3,8 +3,8 @@
 #include <stb_image_write.h>
 
 #include <cctype>
-#include <cstdio>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -25,13 +25,6 @@ namespace {
 
 // The largest file ReadImage reads: a plain-text P3 of 4096x4096 is about 200 MB.
 constexpr std::uintmax_t kMaxFileBytes = 256u << 20;
-
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');  // not "'" + string: that trips GCC 12's -Wrestrict (bug 105329)
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
 
 std::string ToLower(std::string text) {
   for (char& c : text) {
@@ -80,8 +73,7 @@ std::string ReadWholeFile(const fs::path& path) {
   if (status.type() != fs::file_type::regular) {
     throw Error("cannot read " + Quoted(path) + ": not a regular file");
   }
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                        std::fclose);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
   if (!file) {
     throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
   }

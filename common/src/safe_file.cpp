@@ -20,13 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
-
 [[noreturn]] void Fail(const fs::path& path, int error) {
   throw Error("cannot write " + Quoted(path) + ": " + std::strerror(error));
 }
@@ -108,13 +101,13 @@ void RefuseAnythingButARegularFile(const fs::path& path) {
   if (S_ISREG(status.st_mode)) {
     return;
   }
-  const char* what = S_ISDIR(status.st_mode)    ? "a folder"
-                     : S_ISLNK(status.st_mode)  ? "a symbolic link"
-                     : S_ISFIFO(status.st_mode) ? "a FIFO"
+  const char* what = S_ISDIR(status.st_mode)                              ? "a folder"
+                     : S_ISLNK(status.st_mode)                            ? "a symbolic link"
+                     : S_ISFIFO(status.st_mode)                           ? "a FIFO"
                      : S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) ? "a device"
                                                                           : "not a regular file";
   throw Error("will not write " + Quoted(path) + ": it is " + what +
-                   ", not a regular file; nothing was written");
+              ", not a regular file; nothing was written");
 }
 
 // A name for a temporary beside `path` that no other program is likely to pick.

@@ -1,8 +1,10 @@
 // Errors the user can fix, and the one place every program reports them.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace cgfs {
@@ -13,6 +15,9 @@ class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// A path as messages name it: in single quotes, 'like/this.png'.
+std::string Quoted(const std::filesystem::path& path);
 
 // A mistake on the command line; the report adds "(try --help)".
 class UsageError : public Error {
