@@ -25,8 +25,11 @@ TEST_CASE("CanvasToViewport scales pixels to the 1x1 viewport at d = 1", "[equat
 
 TEST_CASE("CanvasToViewport: the 1x1 viewport at d = 1 gives a 53.13 degree field of view",
           "[equations]") {
-  const Viewport viewport;
-  const double fov = 2 * std::atan(viewport.width / 2 / viewport.distance);
+  // The canvas's left edge, x = -Cw/2, looks along (-0.5, 0, 1): 26.57 degrees left of
+  // straight ahead, twice that from edge to edge.
+  const Canvas canvas(600, 600);
+  const Vec3 edge = CanvasToViewport(-300, 0, canvas, Viewport{});
+  const double fov = 2 * std::atan(-edge.x / edge.z);
   CHECK(fov * 180 / std::numbers::pi == Approx(53.13).margin(0.005));
 }
 

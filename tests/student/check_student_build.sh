@@ -91,5 +91,12 @@ for folder in ~/nothing-here ~/misnamed; do
   check "$folder: one line" test "$(wc -l <"$work/out.txt")" -eq 1
 done
 check "the expected names are given" says "the folder names are: 02-basic-rays, 03-light"
+mkdir -p ~/wrong-name/02-basic-ray ~/wrong-name/03-light
+run ~/wrong-name 02
+check "a chapter asked for under another name: exit status 2" test $status -eq 2
+check "it gives the name its folder needs" says "its folder must be named 02-basic-rays \(found 02-basic-ray\)"
+run ~/my-cgfs/02-basic-rays
+check "a chapter folder given for its parent: exit status 2" test $status -eq 2
+check "it says to give the parent folder" says "is itself a chapter folder: give its parent folder"
 
 [ $failed -eq 0 ] && echo "PASS: the documented student path works" || exit 1
