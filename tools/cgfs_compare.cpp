@@ -89,9 +89,11 @@ int Report(const fs::path& folder, fs::path html, const fs::path& golden) {
     html = folder / "report.html";
   }
   const std::vector<cgfs::ReportEntry> entries = cgfs::CompareFolder(folder, golden, true);
+  const std::vector<std::string> unmatched = cgfs::UnmatchedNames(folder, golden);
   if (entries.empty()) {
-    throw cgfs::Error("'" + folder.string() +
-                      "' has no chapter folder (such as 02-basic-rays/) of ours");
+    throw cgfs::Error(cgfs::Quoted(folder) +
+                      " has no chapter folder (such as 02-basic-rays/) of ours" +
+                      (unmatched.empty() ? "" : "; " + unmatched.front()));
   }
   cgfs::WriteReport(entries, html, "Your figures against ours: " + folder.string());
   int failed = 0;
@@ -118,6 +120,9 @@ int Report(const fs::path& folder, fs::path html, const fs::path& golden) {
       std::cout << " (" << entry.diagnosis << ")";
     }
     std::cout << "\n";
+  }
+  for (const std::string& note : unmatched) {
+    std::cout << note << "\n";
   }
   std::cout << "report: " << html.string() << "\n";
   return failed == 0 ? 0 : 1;

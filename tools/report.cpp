@@ -88,7 +88,97 @@ const char* VerdictName(ReportEntry::Verdict verdict) {
   return "";
 }
 
+// The number of single-character insertions, deletions and substitutions that
+// turn one name into the other.
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) {
+    row[j] = j;
+  }
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The one of `names` that `name` was most likely meant to be: one that starts
+// with it or it starts with (fig-3-16 for fig-3-16-specular), else the closest
+// within three edits; empty when none is close.
+std::string ClosestName(const std::string& name, const std::vector<std::string>& names) {
+  std::string best;
+  std::size_t best_distance = 4;
+  for (const std::string& candidate : names) {
+    const bool prefix = candidate.starts_with(name + "-") || name.starts_with(candidate + "-");
+    const std::size_t distance = prefix ? 0 : EditDistance(name, candidate);
+    if (distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+std::vector<std::string> Stems(const std::vector<fs::path>& paths) {
+  std::vector<std::string> stems;
+  for (const fs::path& path : paths) {
+    stems.push_back(path.stem().string());
+  }
+  return stems;
+}
+
+std::string NotOurs(const std::string& what, const std::string& kind, const std::string& closest) {
+  return what + ": not one of our " + kind + ", not compared" +
+         (closest.empty() ? "" : " (did you mean " + closest + "?)");
+}
+
+bool IsImageName(const fs::path& path) {
+  const std::string extension = path.extension().string();
+  const bool image =
+      extension == ".png" || extension == ".ppm" || extension == ".jpg" || extension == ".jpeg";
+  return image && !path.stem().string().ends_with(".diff");
+}
+
 }  // namespace
+
+std::vector<std::string> UnmatchedNames(const fs::path& folder, const fs::path& golden) {
+  std::vector<std::string> chapters;
+  for (const fs::path& chapter : SortedEntries(golden)) {
+    chapters.push_back(chapter.filename().string());
+  }
+  std::vector<std::string> notes;
+  std::error_code error;
+  for (const fs::path& theirs : SortedEntries(folder)) {
+    const std::string name = theirs.filename().string();
+    if (!fs::is_directory(theirs, error)) {
+      continue;
+    }
+    if (std::find(chapters.begin(), chapters.end(), name) == chapters.end()) {
+      notes.push_back(NotOurs(name + "/", "chapter folders", ClosestName(name, chapters)));
+      continue;
+    }
+    std::vector<fs::path> references;
+    for (const fs::path& reference : SortedEntries(golden / name)) {
+      if (reference.extension() == ".png") {
+        references.push_back(reference);
+      }
+    }
+    const std::vector<std::string> figures = Stems(references);
+    for (const fs::path& file : SortedEntries(theirs)) {
+      const std::string figure = file.stem().string();
+      if (IsImageName(file) && std::find(figures.begin(), figures.end(), figure) == figures.end()) {
+        notes.push_back(NotOurs(name + "/" + file.filename().string(), "figures",
+                                ClosestName(figure, figures)));
+      }
+    }
+  }
+  return notes;
+}
 
 std::vector<ReportEntry> CompareFolder(const fs::path& folder, const fs::path& golden,
                                        bool list_missing) {

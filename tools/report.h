@@ -29,6 +29,13 @@ struct ReportEntry {
 std::vector<ReportEntry> CompareFolder(const std::filesystem::path& folder,
                                        const std::filesystem::path& golden, bool list_missing);
 
+// One line per folder or image in FOLDER whose name is not one of ours, so it
+// was not compared, with the name it was probably meant to have: "03-light/
+// fig-3-16.png: not one of our figures, not compared (did you mean
+// fig-3-16-specular?)".
+std::vector<std::string> UnmatchedNames(const std::filesystem::path& folder,
+                                        const std::filesystem::path& golden);
+
 // Writes the page (images embedded as data: URLs), replacing `html` only by a
 // complete new file. Throws cgfs::Error.
 void WriteReport(const std::vector<ReportEntry>& entries, const std::filesystem::path& html,

@@ -198,6 +198,10 @@ hostile "/dev/zero" 02-basic-rays/fig-2-11 /dev/zero
 mkfifo "$work/fifo"
 hostile "a FIFO" 02-basic-rays/fig-2-11 "$work/fifo"
 hostile "a folder" 02-basic-rays/fig-2-11 "$work"
+mkdir -p "$work/misnamed/02-basic-ray"
+expect 2 "--report on a folder whose only chapter folder is misnamed" "$compare" --report "$work/misnamed"
+grep -qF "did you mean 02-basic-rays?" "$work/stderr" ||
+  { echo "FAIL: the misnamed chapter folder is not named with its fix"; failures=$((failures + 1)); }
 # A PNG that declares 10000x10000 pixels: a decompression bomb, refused from its header.
 printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x27\x10\x00\x00\x27\x10\x08\x02\x00\x00\x00\x00\x00\x00\x00' \
   >"$work/bomb.png"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The HTML report of `cgfs-compare --report`, loaded in a real browser (headless
 # Chromium): a student folder with one right figure, one wrong, one moved one row
-# down and one missing. Checks the verdicts printed, and in the browser that every
-# image shows and that the counts at the top match the rows. Leaves a screenshot
+# down and one missing (its image misnamed). Checks the verdicts printed, and in
+# the browser that every image shows and that the counts at the top match the rows. Leaves a screenshot
 # in WORK_DIR/report.png. Without Chromium the browser part is skipped.
 # Usage: check_report_in_browser.sh CHAPTER_02_PROGRAM CGFS_COMPARE WORK_DIR
 set -euo pipefail
@@ -15,6 +15,7 @@ cp "$work/ours/fig-2-11.ppm" "$work/mine/02-basic-rays/"                        
   tail -c +16 "$work/ours/fig-2-11-with-ground.ppm" | head -c $((599 * 1800)); } \
   >"$work/mine/02-basic-rays/fig-2-11-with-ground.ppm"                           # one row down
 cp "$work/ours/fig-2-11.ppm" "$work/mine/03-light/fig-3-7-diffuse.ppm"            # wrong
+cp "$work/ours/fig-2-11.ppm" "$work/mine/03-light/fig-3-16.ppm"                  # misnamed, so
                                                                                  # fig-3-16: missing
 status=0
 "$compare" --report "$work/mine" >"$work/out.txt" || status=$?
@@ -26,6 +27,7 @@ want "02-basic-rays/fig-2-11: PASS"
 want "02-basic-rays/fig-2-11-with-ground: FAIL (your image is ours moved one row down"
 want "03-light/fig-3-7-diffuse: FAIL"
 want "03-light/fig-3-16-specular: missing"
+want "03-light/fig-3-16.ppm: not one of our figures, not compared (did you mean fig-3-16-specular?)"
 
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then
