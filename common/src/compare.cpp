@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -40,10 +41,11 @@ Rgb8 Background(const Image& image) {
 }
 
 // How many pixels differ beyond the tolerance when actual(column, row) is compared
-// with expected(source(column, row)), over the pixels whose source is inside.
-template <typename Source>
+// with recolour(expected(source(column, row))), over the pixels whose source is
+// inside.
+template <typename Source, typename Recolour = std::identity>
 long long DifferingUnder(const Image& expected, const Image& actual, int channel_levels,
-                         Source source) {
+                         Source source, Recolour recolour = {}) {
   long long differing = 0;
   for (int row = 0; row < actual.Height(); ++row) {
     for (int column = 0; column < actual.Width(); ++column) {
@@ -52,8 +54,8 @@ long long DifferingUnder(const Image& expected, const Image& actual, int channel
           from_row >= expected.Height()) {
         continue;
       }
-      if (LargestChannelDifference(expected.At(from_column, from_row), actual.At(column, row)) >
-          channel_levels) {
+      if (LargestChannelDifference(recolour(expected.At(from_column, from_row)),
+                                   actual.At(column, row)) > channel_levels) {
         ++differing;
       }
     }
@@ -62,7 +64,8 @@ long long DifferingUnder(const Image& expected, const Image& actual, int channel
 }
 
 // The first of the usual slips under which the images match: a pixel off in x or
-// y (the canvas-to-screen mapping), or a flip (y growing down instead of up).
+// y (the canvas-to-screen mapping), a flip (y growing down instead of up), or the
+// channels written B, G, R.
 std::string Diagnose(const Image& expected, const Image& actual, const Tolerance& tolerance,
                      long long allowed) {
   struct Slip {
@@ -96,6 +99,13 @@ std::string Diagnose(const Image& expected, const Image& actual, const Tolerance
         return std::pair{w - 1 - column, row};
       }) <= allowed) {
     return "your image is ours mirrored left to right: check the Sx mapping, Sx = Cw/2 + x";
+  }
+  const auto same_place = [](int column, int row) { return std::pair{column, row}; };
+  const auto swap_red_and_blue = [](Rgb8 pixel) { return Rgb8{pixel.b, pixel.g, pixel.r}; };
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, same_place, swap_red_and_blue) <=
+      allowed) {
+    return "your image is ours with red and blue swapped: write the channels in the order "
+           "R, G, B";
   }
   return "";
 }

@@ -122,7 +122,9 @@ TEST_CASE("differing pixels are told apart: in ours only, in yours only, recolou
   CHECK(result.difference.At(11, 10) != result.difference.At(10, 10));
 }
 
-TEST_CASE("a picture moved by one pixel or flipped is diagnosed in words", "[compare]") {
+TEST_CASE(
+    "a picture moved by one pixel, flipped or with red and blue swapped is diagnosed in words",
+    "[compare]") {
   const Image ours = Rectangle(10, 10);
   CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 11)).diagnosis,
              Catch::Contains("moved one row down") && Catch::Contains("Sy"));
@@ -136,6 +138,14 @@ TEST_CASE("a picture moved by one pixel or flipped is diagnosed in words", "[com
              Catch::Contains("upside down"));
   CHECK_THAT(cgfs::CompareImages(ours, Rectangle(60, 10)).diagnosis,
              Catch::Contains("mirrored left to right"));
+  Image blue_and_red = Rectangle(10, 10);
+  Image red_and_blue = Rectangle(10, 10);
+  for (int i = 50; i < 60; ++i) {
+    blue_and_red.Set(i, i, Rgb8{200, 30, 10});
+    red_and_blue.Set(i, i, Rgb8{10, 30, 200});
+  }
+  CHECK_THAT(cgfs::CompareImages(blue_and_red, red_and_blue).diagnosis,
+             Catch::Contains("red and blue swapped"));
   // Moved by more than a pixel: no diagnosis, only the numbers.
   CHECK(cgfs::CompareImages(ours, Rectangle(10, 30)).diagnosis.empty());
   // A match needs none.
