@@ -24,13 +24,17 @@ int LargestChannelDifference(Rgb8 a, Rgb8 b) {
   return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
 }
 
-// The most common colour of an image: the background of every figure.
-Rgb8 Background(const Image& image) {
+// The most common colour of an image over the pixels where counted(column, row):
+// over all of a figure, its background.
+template <typename Counted>
+Rgb8 MostCommonColour(const Image& image, Counted counted) {
   std::map<std::tuple<int, int, int>, long long> counts;
   for (int row = 0; row < image.Height(); ++row) {
     for (int column = 0; column < image.Width(); ++column) {
-      const Rgb8 pixel = image.At(column, row);
-      ++counts[{pixel.r, pixel.g, pixel.b}];
+      if (counted(column, row)) {
+        const Rgb8 pixel = image.At(column, row);
+        ++counts[{pixel.r, pixel.g, pixel.b}];
+      }
     }
   }
   const auto most =
@@ -110,6 +114,25 @@ std::string Diagnose(const Image& expected, const Image& actual, const Tolerance
   return "";
 }
 
+std::string Levels(Rgb8 colour) {
+  return std::to_string(colour.r) + ", " + std::to_string(colour.g) + ", " +
+         std::to_string(colour.b);
+}
+
+// Whether the images match once our background is painted in yours: the scene
+// is right and only the colour of the background differs.
+std::string DiagnoseBackground(const Image& expected, const Image& actual,
+                               const Tolerance& tolerance, long long allowed, Rgb8 ours,
+                               Rgb8 yours) {
+  const auto same_place = [](int column, int row) { return std::pair{column, row}; };
+  const auto repainted = [&](Rgb8 pixel) { return pixel == ours ? yours : pixel; };
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, same_place, repainted) > allowed) {
+    return "";
+  }
+  return "only the background differs: yours is (" + Levels(yours) + "), ours (" + Levels(ours) +
+         "); check the background colour";
+}
+
 Rgb8 Faded(Rgb8 pixel) {
   const int luma = (299 * pixel.r + 587 * pixel.g + 114 * pixel.b) / 1000;
   const auto pale = static_cast<std::uint8_t>(255 - (255 - luma) / 4);
@@ -146,7 +169,10 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
   result.last_column = -1;
   result.last_row = -1;
 
-  const Rgb8 background = Background(expected);
+  // Ours is our most common colour; yours is what you drew most where ours shows.
+  const Rgb8 background = MostCommonColour(expected, [](int, int) { return true; });
+  const Rgb8 their_background = MostCommonColour(
+      actual, [&](int column, int row) { return expected.At(column, row) == background; });
   long long channel_difference_sum = 0;
   for (int row = 0; row < expected.Height(); ++row) {
     for (int column = 0; column < expected.Width(); ++column) {
@@ -164,10 +190,12 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
       }
       if (largest > tolerance.channel_levels) {
         ++result.differing_pixels;
-        if (want == background) {
+        const bool background_in_ours = want == background;
+        const bool background_in_yours = got == their_background;
+        if (background_in_ours && !background_in_yours) {
           ++result.extra_pixels;
           shown = kExtraColor;
-        } else if (got == background) {
+        } else if (!background_in_ours && background_in_yours) {
           ++result.missing_pixels;
           shown = kMissingColor;
         } else {
@@ -187,6 +215,11 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
   result.passed = result.differing_pixels <= result.allowed_differing_pixels;
   if (!result.passed) {
     result.diagnosis = Diagnose(expected, actual, tolerance, result.allowed_differing_pixels);
+    if (result.diagnosis.empty() && their_background != background) {
+      result.diagnosis =
+          DiagnoseBackground(expected, actual, tolerance, result.allowed_differing_pixels,
+                             background, their_background);
+    }
   }
   return result;
 }

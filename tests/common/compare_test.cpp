@@ -122,8 +122,24 @@ TEST_CASE("differing pixels are told apart: in ours only, in yours only, recolou
   CHECK(result.difference.At(11, 10) != result.difference.At(10, 10));
 }
 
+TEST_CASE("a background of another colour is recoloured, not drawn in yours only", "[compare]") {
+  const Image ours = Rectangle(10, 10);
+  Image darker(100, 100, Rgb8{128, 128, 128});  // ours at half brightness: the shapes agree
+  for (int row = 10; row < 30; ++row) {
+    for (int column = 10; column < 40; ++column) {
+      darker.Set(column, row, Rgb8{0, 0, 0});
+    }
+  }
+  const auto result = cgfs::CompareImages(ours, darker);
+  CHECK(result.differing_pixels == 100 * 100 - 30 * 20);
+  CHECK(result.recoloured_pixels == result.differing_pixels);
+  CHECK(result.extra_pixels == 0);
+  CHECK(result.missing_pixels == 0);
+}
+
 TEST_CASE(
-    "a picture moved by one pixel, flipped or with red and blue swapped is diagnosed in words",
+    "a picture moved by one pixel, flipped, with red and blue swapped or on another background is "
+    "diagnosed in words",
     "[compare]") {
   const Image ours = Rectangle(10, 10);
   CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 11)).diagnosis,
@@ -146,6 +162,17 @@ TEST_CASE(
   }
   CHECK_THAT(cgfs::CompareImages(blue_and_red, red_and_blue).diagnosis,
              Catch::Contains("red and blue swapped"));
+  Image on_black = Rectangle(10, 10);
+  for (int row = 0; row < 100; ++row) {
+    for (int column = 0; column < 100; ++column) {
+      if (on_black.At(column, row) == Rgb8{255, 255, 255}) {
+        on_black.Set(column, row, Rgb8{0, 0, 40});
+      }
+    }
+  }
+  CHECK(cgfs::CompareImages(ours, on_black).diagnosis ==
+        "only the background differs: yours is (0, 0, 40), ours (255, 255, 255); check the "
+        "background colour");
   // Moved by more than a pixel: no diagnosis, only the numbers.
   CHECK(cgfs::CompareImages(ours, Rectangle(10, 30)).diagnosis.empty());
   // A match needs none.

@@ -28,12 +28,14 @@ struct Comparison {
   // Bounding box (memory order, inclusive) of the differing pixels; valid when differing_pixels >
   // 0.
   int first_column = 0, first_row = 0, last_column = 0, last_row = 0;
-  // The differing pixels by kind, against the expected image's background (its most
-  // common colour): drawn in ours only, drawn in yours only, drawn in both.
+  // The differing pixels by kind, against each image's background (its most common
+  // colour): drawn in ours only, drawn in yours only, drawn or background in both
+  // in another colour.
   long long missing_pixels = 0, extra_pixels = 0, recoloured_pixels = 0;
   bool passed = false;
   // When the images do not match but would if the actual one were moved by a
-  // pixel or flipped: what happened, in words, and where to look.
+  // pixel, flipped, had its red and blue put back or its background repainted:
+  // what happened, in words, and where to look.
   std::string diagnosis;
   // The expected image faded to pale grey, with the changed pixels in the colours
   // of kDifferenceLegend.
