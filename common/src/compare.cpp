@@ -99,6 +99,14 @@ std::string Diagnose(const Image& expected, const Image& actual, const Tolerance
     return "your image is ours upside down: canvas y grows upwards, rows downwards "
            "(Sy = Ch/2 - y - 1)";
   }
+  // Canvas y negated (a -y in CanvasToViewport): your row r shows our canvas row -y,
+  // which is our row h - 2 - r.
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, [&](int column, int row) {
+        return std::pair{column, h - 2 - row};
+      }) <= allowed) {
+    return "your image is ours upside down about canvas y = 0: check the sign of y in "
+           "CanvasToViewport and the Sy mapping (Sy = Ch/2 - y - 1)";
+  }
   if (DifferingUnder(expected, actual, tolerance.channel_levels, [&](int column, int row) {
         return std::pair{w - 1 - column, row};
       }) <= allowed) {

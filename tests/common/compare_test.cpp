@@ -152,6 +152,9 @@ TEST_CASE(
              Catch::Contains("moved one column left"));
   CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 70)).diagnosis,
              Catch::Contains("upside down"));
+  // Our row r drawn at row 98 - r: canvas y negated.
+  CHECK_THAT(cgfs::CompareImages(ours, Rectangle(10, 69)).diagnosis,
+             Catch::Contains("upside down about canvas y = 0"));
   CHECK_THAT(cgfs::CompareImages(ours, Rectangle(60, 10)).diagnosis,
              Catch::Contains("mirrored left to right"));
   Image blue_and_red = Rectangle(10, 10);
