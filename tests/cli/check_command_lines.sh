@@ -198,6 +198,19 @@ hostile "/dev/zero" 02-basic-rays/fig-2-11 /dev/zero
 mkfifo "$work/fifo"
 hostile "a FIFO" 02-basic-rays/fig-2-11 "$work/fifo"
 hostile "a folder" 02-basic-rays/fig-2-11 "$work"
+# A JPEG is read, with a note that its compression changes pixels; the note goes by
+# the file's first bytes, not its name. Its JPEG comes from the fuzz seeds' writer.
+seeds=$(dirname "$compare")/fuzz-seeds
+if [ -x "$seeds" ]; then
+  "$seeds" "$work/seeds" >/dev/null
+  expect 0 "a JPEG as ACTUAL" "$compare" "$work/seeds/small.jpg" "$work/seeds/small.jpg"
+  grep -qF "note: ACTUAL is a JPEG" "$work/stdout" ||
+    { echo "FAIL: no note that a JPEG is lossy"; failures=$((failures + 1)); }
+  cp "$good" "$work/named.jpg"
+  expect 0 "a PNG named .jpg as ACTUAL" "$compare" 02-basic-rays/fig-2-11 "$work/named.jpg"
+  ! grep -qF "JPEG" "$work/stdout" ||
+    { echo "FAIL: a PNG named .jpg was called a JPEG"; failures=$((failures + 1)); }
+fi
 mkdir -p "$work/misnamed/02-basic-ray"
 expect 2 "--report on a folder whose only chapter folder is misnamed" "$compare" --report "$work/misnamed"
 grep -qF "did you mean 02-basic-rays?" "$work/stderr" ||
