@@ -244,7 +244,9 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
        << Escaped(title) << "</title>\n<style>\n"
        << "body{font-family:sans-serif;margin:1em}td{vertical-align:top;padding:4px;"
-          "text-align:center}img{width:300px;image-rendering:pixelated;border:1px solid #ccc}"
+          "text-align:center}img{width:300px;image-rendering:pixelated;border:1px solid #ccc;"
+          "cursor:zoom-in}img.full{width:auto;cursor:zoom-out}tr.missing img{width:100px}"
+          "#check{display:none}"
           "tr.passed h3{color:#070}tr.failed h3,tr.unreadable h3{color:#b00}"
           "tr.missing h3{color:#a60}pre{text-align:left;white-space:pre-wrap;max-width:28em}"
           ".diagnosis{font-weight:bold}\n"
@@ -252,7 +254,8 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
        << "<p id=\"summary\"><span id=\"passed\">" << counts[0] << "</span> passed, "
        << "<span id=\"failed\">" << counts[1] + counts[3] << "</span> failed, "
        << "<span id=\"missing\">" << counts[2] << "</span> missing</p>\n"
-       << "<p>Difference images: " << Escaped(kDifferenceLegend) << ".</p>\n<table>\n";
+       << "<p>Difference images: " << Escaped(kDifferenceLegend)
+       << ". Click an image to see it at full size.</p>\n<table>\n";
   for (const ReportEntry& entry : entries) {
     const fs::path readme = fs::path(CGFS_SOURCE_DIR) / "chapters" / entry.chapter / "README.md";
     page << "<tr class=\"" << VerdictName(entry.verdict) << "\"><td><h3>" << Escaped(entry.chapter)
@@ -262,14 +265,19 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
     }
     page << "<pre>" << Escaped(entry.message) << "</pre><a href=\""
          << Escaped(fs::relative(readme, html_folder).generic_string())
-         << "\">the chapter's README</a></td>" << ImageCell(entry.expected, "ours")
-         << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference")
-         << "</tr>\n";
+         << "\">the chapter's README</a></td>" << ImageCell(entry.expected, "ours");
+    if (entry.verdict != ReportEntry::Verdict::kMissing) {
+      page << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference");
+    }
+    page << "</tr>\n";
   }
-  // A line the page fills in itself once loaded: how many of its images a browser
-  // could show, and the verdicts counted from the rows (tests/report checks both).
+  // A hidden line the page fills in itself once loaded: how many of its images a
+  // browser could show, and the verdicts counted from the rows (tests/report checks
+  // both). A click on an image shows it at full size, another shrinks it back.
   page << "</table>\n<p id=\"check\">(the browser has not counted the images yet)</p>\n"
-       << "<script>\nwindow.addEventListener('load', () => {\n"
+       << "<script>\nfor (const image of document.images) {\n"
+       << "  image.addEventListener('click', () => image.classList.toggle('full'));\n}\n"
+       << "window.addEventListener('load', () => {\n"
        << "  const images = [...document.images];\n"
        << "  const shown = images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
        << "  const rows = verdict => document.querySelectorAll('tr.' + verdict).length;\n"
