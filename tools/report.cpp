@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 #include <system_error>
+#include <utility>
 
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
@@ -216,12 +217,14 @@ std::vector<ReportEntry> CompareFolder(const fs::path& folder, const fs::path& g
       } else {
         try {
           entry.actual = ReadImage(entry.actual_file);
-          const Comparison comparison = CompareImages(entry.expected, entry.actual);
+          Comparison comparison = CompareImages(entry.expected, entry.actual);
           entry.verdict =
               comparison.passed ? ReportEntry::Verdict::kPassed : ReportEntry::Verdict::kFailed;
+          // The diagnosis has a line of its own on the page: the numbers go without it.
+          entry.diagnosis = std::move(comparison.diagnosis);
+          comparison.diagnosis.clear();
           entry.message = Describe(comparison, entry.actual.Width(), entry.actual.Height());
-          entry.diagnosis = comparison.diagnosis;
-          entry.difference = comparison.difference;
+          entry.difference = std::move(comparison.difference);
         } catch (const Error& bad) {
           entry.verdict = ReportEntry::Verdict::kUnreadable;
           entry.message = bad.what();

@@ -19,6 +19,7 @@ struct ReportEntry {
   Verdict verdict = Verdict::kMissing;
   std::filesystem::path actual_file;  // empty when missing
   std::string message;                // the numbers, or why the file could not be used
+                                      // (without the diagnosis, which has its own line)
   std::string diagnosis;
   Image expected, actual, difference;  // actual and difference empty unless compared
 };
