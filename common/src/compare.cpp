@@ -67,11 +67,33 @@ long long DifferingUnder(const Image& expected, const Image& actual, int channel
   return differing;
 }
 
+std::pair<int, int> SamePlace(int column, int row) {
+  return {column, row};
+}
+
+std::string Levels(Rgb8 colour) {
+  return std::to_string(colour.r) + ", " + std::to_string(colour.g) + ", " +
+         std::to_string(colour.b);
+}
+
+// Whether the images match once our background is painted in yours: the scene
+// is right and only the colour of the background differs.
+std::string DiagnoseBackground(const Image& expected, const Image& actual,
+                               const Tolerance& tolerance, long long allowed, Rgb8 ours,
+                               Rgb8 yours) {
+  const auto repainted = [&](Rgb8 pixel) { return pixel == ours ? yours : pixel; };
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, SamePlace, repainted) > allowed) {
+    return "";
+  }
+  return "only the background differs: yours is (" + Levels(yours) + "), ours (" + Levels(ours) +
+         "); check the background colour";
+}
+
 // The first of the usual slips under which the images match: a pixel off in x or
-// y (the canvas-to-screen mapping), a flip (y growing down instead of up), or the
-// channels written B, G, R.
+// y (the canvas-to-screen mapping), a flip (y growing down instead of up), the
+// channels written B, G, R, or another background colour (ours and yours given).
 std::string Diagnose(const Image& expected, const Image& actual, const Tolerance& tolerance,
-                     long long allowed) {
+                     long long allowed, Rgb8 background, Rgb8 their_background) {
   struct Slip {
     int dx, dy;
     const char* words;
@@ -112,33 +134,16 @@ std::string Diagnose(const Image& expected, const Image& actual, const Tolerance
       }) <= allowed) {
     return "your image is ours mirrored left to right: check the Sx mapping, Sx = Cw/2 + x";
   }
-  const auto same_place = [](int column, int row) { return std::pair{column, row}; };
   const auto swap_red_and_blue = [](Rgb8 pixel) { return Rgb8{pixel.b, pixel.g, pixel.r}; };
-  if (DifferingUnder(expected, actual, tolerance.channel_levels, same_place, swap_red_and_blue) <=
+  if (DifferingUnder(expected, actual, tolerance.channel_levels, SamePlace, swap_red_and_blue) <=
       allowed) {
     return "your image is ours with red and blue swapped: write the channels in the order "
            "R, G, B";
   }
-  return "";
-}
-
-std::string Levels(Rgb8 colour) {
-  return std::to_string(colour.r) + ", " + std::to_string(colour.g) + ", " +
-         std::to_string(colour.b);
-}
-
-// Whether the images match once our background is painted in yours: the scene
-// is right and only the colour of the background differs.
-std::string DiagnoseBackground(const Image& expected, const Image& actual,
-                               const Tolerance& tolerance, long long allowed, Rgb8 ours,
-                               Rgb8 yours) {
-  const auto same_place = [](int column, int row) { return std::pair{column, row}; };
-  const auto repainted = [&](Rgb8 pixel) { return pixel == ours ? yours : pixel; };
-  if (DifferingUnder(expected, actual, tolerance.channel_levels, same_place, repainted) > allowed) {
-    return "";
+  if (their_background != background) {
+    return DiagnoseBackground(expected, actual, tolerance, allowed, background, their_background);
   }
-  return "only the background differs: yours is (" + Levels(yours) + "), ours (" + Levels(ours) +
-         "); check the background colour";
+  return "";
 }
 
 Rgb8 Faded(Rgb8 pixel) {
@@ -222,12 +227,8 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
       static_cast<double>(channel_difference_sum) / static_cast<double>(result.pixels * 3);
   result.passed = result.differing_pixels <= result.allowed_differing_pixels;
   if (!result.passed) {
-    result.diagnosis = Diagnose(expected, actual, tolerance, result.allowed_differing_pixels);
-    if (result.diagnosis.empty() && their_background != background) {
-      result.diagnosis =
-          DiagnoseBackground(expected, actual, tolerance, result.allowed_differing_pixels,
-                             background, their_background);
-    }
+    result.diagnosis = Diagnose(expected, actual, tolerance, result.allowed_differing_pixels,
+                                background, their_background);
   }
   return result;
 }
