@@ -5,7 +5,8 @@
 # "IntersectRaySphere: ..."), else to "golden images", "pinned pixels" or "other tests".
 
 # For a failed test, the reason to print under it: the image diagnosis ("your image
-# is ours moved one row down"), else the first failed check with what its values were.
+# is ours moved one row down") or else its numbers, and its first wrong pixel; else the
+# first failed check with what its values were.
 function trimmed(text) {
   sub(/^ +/, "", text)
   sub(/ +$/, "", text)
@@ -19,6 +20,8 @@ FNR == NR {
     stage = 0
   } else if (match($0, /not written yet: [A-Za-z_0-9]+/)) {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)
+  } else if ($0 ~ /^ *first differing pixel: / && !(current in pixel_of)) {
+    pixel_of[current] = trimmed($0)  # an image's first wrong pixel: where, yours, ours
   } else if (current in reason_of) {
     # one reason a test is enough
   } else if ($0 ~ /^ *diagnosis: /) {
@@ -65,7 +68,7 @@ match($0, /Test +#[0-9]+: /) {
   }
   if (match(test_name, /^[A-Z][A-Za-z0-9_]*[: ]/)) {
     group = substr(test_name, 1, RLENGTH - 1)
-  } else if (test_name ~ /matches its golden image$/) {
+  } else if (test_name ~ /matches its golden image/) {
     group = "golden images"
   } else if (test_name ~ /^pinned pixels/) {
     group = "pinned pixels"
@@ -99,6 +102,9 @@ match($0, /Test +#[0-9]+: /) {
       failures[key] = failures[key] "        " reason_of[name] "\n"
     } else if (name in message_of) {
       failures[key] = failures[key] "        " message_of[name] "\n"
+    }
+    if (name in pixel_of) {
+      failures[key] = failures[key] "        " pixel_of[name] "\n"
     }
   }
 }

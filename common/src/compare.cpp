@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -89,9 +90,60 @@ std::string DiagnoseBackground(const Image& expected, const Image& actual,
          "); check the background colour";
 }
 
+// Whether yours is ours with every channel scaled by one factor, or moved by one
+// number of levels (clamped to 0..255): the shapes are right, the brightness is not.
+std::string DiagnoseBrightness(const Image& expected, const Image& actual,
+                               const Tolerance& tolerance, long long allowed) {
+  // Least squares over every channel: factor = sum(a e) / sum(e e); offset = mean of a - e
+  // where neither is clamped.
+  double products = 0, squares = 0, offsets = 0, unclamped = 0;
+  for (int row = 0; row < expected.Height(); ++row) {
+    for (int column = 0; column < expected.Width(); ++column) {
+      const Rgb8 e = expected.At(column, row);
+      const Rgb8 a = actual.At(column, row);
+      for (const auto& [ours, yours] : {std::pair{e.r, a.r}, {e.g, a.g}, {e.b, a.b}}) {
+        products += static_cast<double>(ours) * yours;
+        squares += static_cast<double>(ours) * ours;
+        if (ours > 0 && ours < 255 && yours > 0 && yours < 255) {
+          offsets += static_cast<double>(yours) - ours;
+          unclamped += 1;
+        }
+      }
+    }
+  }
+  const auto level = [](double value) {
+    return static_cast<std::uint8_t>(std::clamp(std::round(value), 0.0, 255.0));
+  };
+  // To two decimals, as people write factors: off by at most 1.3 levels at 255.
+  const double factor = squares > 0 ? std::round(100 * products / squares) / 100 : 1;
+  const auto scaled = [&](Rgb8 p) {
+    return Rgb8{level(p.r * factor), level(p.g * factor), level(p.b * factor)};
+  };
+  if (std::abs(factor - 1) >= 0.01 &&
+      DifferingUnder(expected, actual, tolerance.channel_levels, SamePlace, scaled) <= allowed) {
+    std::ostringstream words;
+    words << "your image is ours with every channel times " << std::setprecision(3) << factor
+          << (factor < 1 ? " (darker)" : " (brighter)")
+          << ": check how colours become 0-255 levels, and the lights' intensities";
+    return words.str();
+  }
+  const int offset = unclamped > 0 ? static_cast<int>(std::lround(offsets / unclamped)) : 0;
+  const auto moved = [&](Rgb8 p) {
+    return Rgb8{level(p.r + offset), level(p.g + offset), level(p.b + offset)};
+  };
+  if (std::abs(offset) > tolerance.channel_levels &&
+      DifferingUnder(expected, actual, tolerance.channel_levels, SamePlace, moved) <= allowed) {
+    return "your image is ours " + std::to_string(std::abs(offset)) + " levels " +
+           (offset < 0 ? "darker" : "brighter") +
+           " everywhere: check how colours become 0-255 levels";
+  }
+  return "";
+}
+
 // The first of the usual slips under which the images match: a pixel off in x or
 // y (the canvas-to-screen mapping), a flip (y growing down instead of up), the
-// channels written B, G, R, or another background colour (ours and yours given).
+// channels written B, G, R, another background colour (ours and yours given), or
+// another brightness.
 std::string Diagnose(const Image& expected, const Image& actual, const Tolerance& tolerance,
                      long long allowed, Rgb8 background, Rgb8 their_background) {
   struct Slip {
@@ -141,9 +193,13 @@ std::string Diagnose(const Image& expected, const Image& actual, const Tolerance
            "R, G, B";
   }
   if (their_background != background) {
-    return DiagnoseBackground(expected, actual, tolerance, allowed, background, their_background);
+    if (std::string words =
+            DiagnoseBackground(expected, actual, tolerance, allowed, background, their_background);
+        !words.empty()) {
+      return words;
+    }
   }
-  return "";
+  return DiagnoseBrightness(expected, actual, tolerance, allowed);
 }
 
 Rgb8 Faded(Rgb8 pixel) {
@@ -202,7 +258,9 @@ Comparison CompareImages(const Image& expected, const Image& actual, const Toler
         shown = kChangedColor;
       }
       if (largest > tolerance.channel_levels) {
-        ++result.differing_pixels;
+        if (result.differing_pixels++ == 0) {
+          result.first_differing = {column, row, want, got};
+        }
         const bool background_in_ours = want == background;
         const bool background_in_yours = got == their_background;
         if (background_in_ours && !background_in_yours) {
@@ -244,6 +302,9 @@ std::string Describe(const Comparison& c, int width, int height) {
   if (c.differing_pixels > 0) {
     out << "  differing pixels lie between " << Position(c.first_column, c.first_row, width, height)
         << " and " << Position(c.last_column, c.last_row, width, height) << "\n";
+    const Comparison::Pixel& first = c.first_differing;
+    out << "  first differing pixel: " << Position(first.column, first.row, width, height)
+        << ": yours (" << Levels(first.yours) << "), ours (" << Levels(first.ours) << ")\n";
     out << "  of them in ours only (missing): " << c.missing_pixels
         << ", in yours only (extra): " << c.extra_pixels
         << ", in both in another colour: " << c.recoloured_pixels << "\n";

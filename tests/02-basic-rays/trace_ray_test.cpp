@@ -4,6 +4,8 @@
 #include "printing.h"
 #include "raytracer.h"
 
+using cgfs::test::IsSameImageAs;
+
 TEST_CASE("TraceRay keeps the nearest root inside [t_min, t_max]", "[equations]") {
   Scene scene;
   scene.background_color = cgfs::kWhite;
@@ -26,5 +28,5 @@ TEST_CASE("RenderScene paints every pixel of the canvas exactly once", "[equatio
   empty.background_color = cgfs::kBlack;
   Canvas canvas(40, 30, cgfs::kWhite);
   RenderScene(empty, canvas);
-  CHECK(canvas.GetImage() == cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0}));
+  CHECK_THAT(canvas.GetImage(), IsSameImageAs(cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0})));
 }

@@ -8,6 +8,7 @@
 #include "scenes.h"
 
 using Catch::Detail::Approx;
+using cgfs::test::IsSameImageAs;
 
 namespace {
 
@@ -53,7 +54,7 @@ TEST_CASE("RenderScene paints every pixel of the canvas exactly once", "[equatio
   empty.background_color = cgfs::kBlack;
   Canvas canvas(40, 30, cgfs::kWhite);
   RenderScene(empty, kDefaultRecursionDepth, canvas);
-  CHECK(canvas.GetImage() == cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0}));
+  CHECK_THAT(canvas.GetImage(), IsSameImageAs(cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0})));
 }
 
 TEST_CASE("ClosestIntersection returns the nearest sphere and its t", "[equations]") {

@@ -9,12 +9,84 @@ using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;
 using cgfs::test::RenderFigureNamed;
 
-TEST_CASE("golden images of every figure", "[figures]") {
-  for (const cgfs::Figure& figure : Figures({})) {
-    SECTION(figure.name) {
-      CheckAgainstGolden(CGFS_CHAPTER, Figures({}), figure.name);
-    }
-  }
+TEST_CASE("fig-5-1-camera matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "fig-5-1-camera");
+}
+
+TEST_CASE("sphere-field-100 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-100");
+}
+
+TEST_CASE("sphere-field-1000 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-1000");
+}
+
+TEST_CASE("sphere-field-10000 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-10000");
+}
+
+TEST_CASE("sphere-field-100000 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-100000");
+}
+
+TEST_CASE("triangles matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "triangles");
+}
+
+TEST_CASE("torus-mesh matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "torus-mesh");
+}
+
+TEST_CASE("csg-operations matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "csg-operations");
+}
+
+TEST_CASE("csg-lens matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "csg-lens");
+}
+
+TEST_CASE("csg-death-star matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "csg-death-star");
+}
+
+TEST_CASE("csg-nested matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "csg-nested");
+}
+
+TEST_CASE("transparency matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "transparency");
+}
+
+TEST_CASE("refraction-glass-sphere matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "refraction-glass-sphere");
+}
+
+TEST_CASE("refraction-magnifying-glass matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "refraction-magnifying-glass");
+}
+
+TEST_CASE("thin-wires matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "thin-wires");
+}
+
+TEST_CASE("subsampling-thin-wires matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "subsampling-thin-wires");
+}
+
+TEST_CASE("supersampling-4 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-4");
+}
+
+TEST_CASE("supersampling-9 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-9");
+}
+
+TEST_CASE("supersampling-16 matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-16");
+}
+
+TEST_CASE("supersampling-adaptive matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-adaptive");
 }
 
 TEST_CASE("pinned pixels: the Death Star's crater has the small sphere's colour", "[figures]") {

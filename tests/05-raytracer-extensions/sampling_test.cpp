@@ -7,6 +7,7 @@
 #include "scenes.h"
 
 using cgfs::Rgb8;
+using cgfs::test::IsSameImageAs;
 using cgfs::test::RenderFigureNamed;
 
 TEST_CASE("DrawSubsampled: Figure 5-1 within the stated tolerance of the full render",
@@ -56,7 +57,7 @@ TEST_CASE("RenderSceneSupersampled: one ray per pixel is RenderScene", "[samplin
   RenderScene(SceneCamera(), 3, plain, AllOptimizations());
   Canvas one(64, 64);
   RenderSceneSupersampled(SceneCamera(), 3, 1, one, AllOptimizations());
-  CHECK(one.GetImage() == plain.GetImage());
+  CHECK_THAT(one.GetImage(), IsSameImageAs(plain.GetImage()));
 }
 
 TEST_CASE("RenderSceneSupersampled: edges get colours in between", "[sampling]") {

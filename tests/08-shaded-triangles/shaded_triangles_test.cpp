@@ -12,6 +12,7 @@
 
 using cgfs::test::DrawnPixels;
 using Pixels = std::set<std::pair<int, int>>;
+using cgfs::test::IsSameImageAs;
 
 namespace {
 
@@ -72,14 +73,15 @@ TEST_CASE("DrawShadedTriangle: the middle of a side has the mean of its ends' h"
 TEST_CASE("DrawShadedTriangle: h = 1 everywhere is DrawFilledTriangle", "[shaded]") {
   Canvas filled(600, 600);
   DrawFilledTriangle({-200, -250}, {200, 50}, {20, 250}, cgfs::kGreen, filled);
-  CHECK(Shaded({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}).GetImage() == filled.GetImage());
+  CHECK_THAT(Shaded({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}).GetImage(),
+             IsSameImageAs(filled.GetImage()));
 }
 
 TEST_CASE("DrawShadedTriangle: the intensity travels with its vertex", "[shaded]") {
   const cgfs::Image expected = Shaded(kShaded0, kShaded1, kShaded2).GetImage();
-  CHECK(Shaded(kShaded2, kShaded1, kShaded0).GetImage() == expected);
-  CHECK(Shaded(kShaded1, kShaded0, kShaded2).GetImage() == expected);
-  CHECK(Shaded(kShaded2, kShaded0, kShaded1).GetImage() == expected);
+  CHECK_THAT(Shaded(kShaded2, kShaded1, kShaded0).GetImage(), IsSameImageAs(expected));
+  CHECK_THAT(Shaded(kShaded1, kShaded0, kShaded2).GetImage(), IsSameImageAs(expected));
+  CHECK_THAT(Shaded(kShaded2, kShaded0, kShaded1).GetImage(), IsSameImageAs(expected));
 }
 
 TEST_CASE("DrawShadedTriangle: degenerate triangles draw without crashing", "[shaded]") {

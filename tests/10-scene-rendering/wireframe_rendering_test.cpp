@@ -2,7 +2,10 @@
 // RenderScene clips what it draws, and Listing 10-3 has had its day.
 #include <catch2/catch.hpp>
 
+#include "printing.h"
 #include "scenes.h"
+
+using cgfs::test::IsSameImageAs;
 
 TEST_CASE("RenderInstance and RenderScene agree when the camera is at the origin", "[render]") {
   // Listing 10-3 (ApplyTransform per vertex) and Listing 10-5 (one matrix per instance).
@@ -13,5 +16,5 @@ TEST_CASE("RenderInstance and RenderScene agree when the camera is at the origin
   }
   Canvas by_matrix(600, 600);
   RenderScene(scene, by_matrix);
-  CHECK(by_instance.GetImage() == by_matrix.GetImage());
+  CHECK_THAT(by_instance.GetImage(), IsSameImageAs(by_matrix.GetImage()));
 }

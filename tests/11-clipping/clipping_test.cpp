@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "checks.h"
+#include "printing.h"
 #include "scenes.h"
 
 using Catch::Detail::Approx;
 using cgfs::test::CheckNear;
+using cgfs::test::IsSameImageAs;
 
 namespace {
 
@@ -230,7 +232,7 @@ TEST_CASE("a cube around the camera: only its face on the near plane is left", "
   Canvas front_face(600, 600);
   DrawWireframeTriangle({600, 600}, {-600, 600}, {-600, -600}, cgfs::kRed, front_face);
   DrawWireframeTriangle({600, 600}, {-600, -600}, {600, -600}, cgfs::kRed, front_face);
-  CHECK(canvas.GetImage() == front_face.GetImage());
+  CHECK_THAT(canvas.GetImage(), IsSameImageAs(front_face.GetImage()));
 }
 
 TEST_CASE("a cube behind the camera draws nothing, not an upside-down image", "[clipping]") {
@@ -238,7 +240,7 @@ TEST_CASE("a cube behind the camera draws nothing, not an upside-down image", "[
   scene.instances = {{&CubeModel(), {1, glm::dmat4(1.0), {0.5, 0.5, -5}}}};
   Canvas canvas(600, 600);
   RenderScene(scene, canvas);
-  CHECK(canvas.GetImage() == Canvas(600, 600).GetImage());
+  CHECK_THAT(canvas.GetImage(), IsSameImageAs(Canvas(600, 600).GetImage()));
 }
 
 TEST_CASE("geometry reaching from behind the camera is drawn only where it is in front",

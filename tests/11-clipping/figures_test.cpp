@@ -7,12 +7,14 @@
 
 using cgfs::Rgb8;
 using cgfs::test::CheckAgainstGolden;
+using cgfs::test::IsSameImageAs;
 using cgfs::test::RenderFigureNamed;
 
 TEST_CASE("the rejected cube leaves the picture of figure 10-10 unchanged", "[figures]") {
   Canvas without(600, 600);
   RenderScene(SceneTransformedCubes(), without);
-  CHECK(RenderFigureNamed(Figures(), "clipped-scene").GetImage() == without.GetImage());
+  CHECK_THAT(RenderFigureNamed(Figures(), "clipped-scene").GetImage(),
+             IsSameImageAs(without.GetImage()));
 }
 
 TEST_CASE("pinned pixels of the clipped scene", "[figures]") {

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 
+#include "printing.h"
 #include "scenes.h"
 
 using Catch::Detail::Approx;
+using cgfs::test::IsSameImageAs;
 
 TEST_CASE("DepthBuffer with 1/z starts at 0 and keeps what is strictly closer", "[depth]") {
   const Canvas canvas(600, 600);
@@ -119,5 +121,5 @@ TEST_CASE("a depth-tested triangle on an empty buffer covers what DrawFilledTria
   DepthBuffer buffer(tested, DepthValue::kInverseZ);
   DrawFilledTriangle({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}, 3, 7, 5, cgfs::kGreen, tested,
                      buffer);
-  CHECK(tested.GetImage() == plain.GetImage());
+  CHECK_THAT(tested.GetImage(), IsSameImageAs(plain.GetImage()));
 }

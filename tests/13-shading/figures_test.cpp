@@ -80,10 +80,86 @@ TEST_CASE("figure 13-11 agrees with the ray tracer's Figure 3-16 where it is pin
   }
 }
 
-TEST_CASE("every figure matches its golden image", "[golden]") {
-  for (const cgfs::Figure& figure : Figures()) {
-    DYNAMIC_SECTION(figure.name) {
-      CheckAgainstGolden(CGFS_CHAPTER, Figures(), figure.name);
-    }
-  }
+TEST_CASE("flat-triangle-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "flat-triangle-normals-diffuse");
+}
+
+TEST_CASE("flat-triangle-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "flat-triangle-normals-specular");
+}
+
+TEST_CASE("fig-13-1-flat-triangle-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-1-flat-triangle-normals-diffuse-specular");
+}
+
+TEST_CASE("flat-model-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "flat-model-normals-diffuse");
+}
+
+TEST_CASE("flat-model-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "flat-model-normals-specular");
+}
+
+TEST_CASE("flat-model-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "flat-model-normals-diffuse-specular");
+}
+
+TEST_CASE("gouraud-triangle-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "gouraud-triangle-normals-diffuse");
+}
+
+TEST_CASE("gouraud-triangle-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "gouraud-triangle-normals-specular");
+}
+
+TEST_CASE("fig-13-3-gouraud-triangle-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-3-gouraud-triangle-normals-diffuse-specular");
+}
+
+TEST_CASE("gouraud-model-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "gouraud-model-normals-diffuse");
+}
+
+TEST_CASE("gouraud-model-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "gouraud-model-normals-specular");
+}
+
+TEST_CASE("fig-13-6-gouraud-model-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-6-gouraud-model-normals-diffuse-specular");
+}
+
+TEST_CASE("phong-triangle-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "phong-triangle-normals-diffuse");
+}
+
+TEST_CASE("phong-triangle-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "phong-triangle-normals-specular");
+}
+
+TEST_CASE("phong-triangle-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "phong-triangle-normals-diffuse-specular");
+}
+
+TEST_CASE("phong-model-normals-diffuse matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "phong-model-normals-diffuse");
+}
+
+TEST_CASE("phong-model-normals-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "phong-model-normals-specular");
+}
+
+TEST_CASE("fig-13-9-phong-model-normals-diffuse-specular matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-9-phong-model-normals-diffuse-specular");
+}
+
+TEST_CASE("fig-13-7-close-light-gouraud matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-7-close-light-gouraud");
+}
+
+TEST_CASE("fig-13-10-close-light-phong matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-10-close-light-phong");
+}
+
+TEST_CASE("fig-13-11-raytracer-spheres matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-11-raytracer-spheres");
 }

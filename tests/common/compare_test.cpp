@@ -76,6 +76,22 @@ TEST_CASE("a changed 10x10 block fails and is counted exactly", "[compare]") {
              Catch::Contains("FAIL: 100 of 360000") && Catch::Contains("canvas (-250, 99)"));
 }
 
+TEST_CASE("the first differing pixel is the first in reading order, with both colours",
+          "[compare]") {
+  const Image expected(600, 600, Rgb8{255, 255, 255});
+  Image actual = expected;
+  actual.Set(400, 300, Rgb8{10, 20, 30});  // lower, but further left than...
+  actual.Set(450, 120, Rgb8{0, 0, 255});   // ...this one, which comes first
+  const auto result = cgfs::CompareImages(expected, actual);
+  CHECK(result.first_differing.column == 450);
+  CHECK(result.first_differing.row == 120);
+  CHECK(result.first_differing.yours == Rgb8{0, 0, 255});
+  CHECK(result.first_differing.ours == Rgb8{255, 255, 255});
+  CHECK_THAT(cgfs::Describe(result, 600, 600),
+             Catch::Contains("first differing pixel: (450, 120) = canvas (150, 179): "
+                             "yours (0, 0, 255), ours (255, 255, 255)"));
+}
+
 TEST_CASE("the tolerance is a budget of pixels beyond a few levels", "[compare]") {
   const Image expected = Gradient(600, 600);
   Image actual = expected;
@@ -180,4 +196,40 @@ TEST_CASE(
   CHECK(cgfs::CompareImages(ours, Rectangle(10, 30)).diagnosis.empty());
   // A match needs none.
   CHECK(cgfs::CompareImages(ours, ours).diagnosis.empty());
+}
+
+TEST_CASE("a picture darker or brighter by one factor or one number of levels is diagnosed",
+          "[compare]") {
+  const Image ours = Gradient(100, 100);  // channels 10..209 and 128
+  const auto recoloured = [&](auto change) {
+    Image image = ours;
+    for (int row = 0; row < 100; ++row) {
+      for (int column = 0; column < 100; ++column) {
+        const Rgb8 p = ours.At(column, row);
+        image.Set(column, row, Rgb8{change(p.r), change(p.g), change(p.b)});
+      }
+    }
+    return image;
+  };
+  const auto level = [](double value) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(value), 0L, 255L));
+  };
+  CHECK(cgfs::CompareImages(ours, recoloured([&](int c) { return level(c * 0.8); })).diagnosis ==
+        "your image is ours with every channel times 0.8 (darker): check how colours become "
+        "0-255 levels, and the lights' intensities");
+  CHECK_THAT(
+      cgfs::CompareImages(ours, recoloured([&](int c) { return level(c * 1.25); })).diagnosis,
+      Catch::StartsWith("your image is ours with every channel times 1.25 (brighter)"));
+  CHECK(cgfs::CompareImages(ours, recoloured([&](int c) { return level(c + 20); })).diagnosis ==
+        "your image is ours 20 levels brighter everywhere: check how colours become 0-255 levels");
+  CHECK_THAT(cgfs::CompareImages(ours, recoloured([&](int c) { return level(c - 7); })).diagnosis,
+             Catch::StartsWith("your image is ours 7 levels darker everywhere"));
+  // Darker in one half only is not a change of brightness.
+  Image half = ours;
+  for (int row = 0; row < 50; ++row) {
+    for (int column = 0; column < 100; ++column) {
+      half.Set(column, row, Rgb8{0, 0, 0});
+    }
+  }
+  CHECK(cgfs::CompareImages(ours, half).diagnosis.empty());
 }

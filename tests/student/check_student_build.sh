@@ -66,6 +66,8 @@ check "the failing function is named" says "^  IntersectRaySphere +FAILED"
 check "the failure page is announced" says "^images of the failed figures: "
 check "the failed check and its values are on the console" says "^        (CHECK|REQUIRE).*  is  "
 check "a failed figure's numbers are on the console" says "^        FAIL: [0-9]+ of 360000 pixels differ"
+check "a failed figure's first wrong pixel is on the console" \
+  says "^        first differing pixel: \([0-9]+, [0-9]+\) = canvas \(-?[0-9]+, -?[0-9]+\): yours \("
 
 echo "== the mistake fixed"
 cp "$ours/raytracer.cpp" "$student/"

@@ -28,6 +28,12 @@ struct Comparison {
   // Bounding box (memory order, inclusive) of the differing pixels; valid when differing_pixels >
   // 0.
   int first_column = 0, first_row = 0, last_column = 0, last_row = 0;
+  // The first differing pixel, reading from the top left, and its two colours.
+  struct Pixel {
+    int column = 0, row = 0;
+    Rgb8 ours, yours;
+  };
+  Pixel first_differing;
   // The differing pixels by kind, against each image's background (its most common
   // colour): drawn in ours only, drawn in yours only, drawn or background in both
   // in another colour.
