@@ -242,7 +242,6 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
   for (const ReportEntry& entry : entries) {
     ++counts[static_cast<int>(entry.verdict)];
   }
-  const fs::path html_folder = fs::absolute(html).parent_path();
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
        << Escaped(title) << "</title>\n<style>\n"
@@ -266,9 +265,10 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
     if (!entry.diagnosis.empty()) {
       page << "<p class=\"diagnosis\">" << Escaped(entry.diagnosis) << "</p>";
     }
-    page << "<pre>" << Escaped(entry.message) << "</pre><a href=\""
-         << Escaped(fs::relative(readme, html_folder).generic_string())
-         << "\">the chapter's README</a></td>" << ImageCell(entry.expected, "ours");
+    // The README is Markdown, which a browser shows as raw text: named, not linked.
+    page << "<pre>" << Escaped(entry.message) << "</pre><p>The chapter's figures and where "
+         << "the sources disagree: <code>" << Escaped(readme.generic_string())
+         << "</code></p></td>" << ImageCell(entry.expected, "ours");
     if (entry.verdict != ReportEntry::Verdict::kMissing) {
       page << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference");
     }
@@ -276,7 +276,9 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
   }
   // A hidden line the page fills in itself once loaded: how many of its images a
   // browser could show, and the verdicts counted from the rows (tests/report checks
-  // both). A click on an image shows it at full size, another shrinks it back.
+  // both). A click on an image shows it at full size, another shrinks it back; opened
+  // as report.html#click-test, the page clicks a failed figure's image twice itself and
+  // adds the widths it had to the line.
   page << "</table>\n<p id=\"check\">(the browser has not counted the images yet)</p>\n"
        << "<script>\nfor (const image of document.images) {\n"
        << "  image.addEventListener('click', () => image.classList.toggle('full'));\n}\n"
@@ -287,6 +289,13 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
        << "  document.getElementById('check').textContent = `images shown: ${shown} of "
           "${images.length}; rows passed: ${rows('passed')}, failed: "
           "${rows('failed') + rows('unreadable')}, missing: ${rows('missing')}`;\n"
+       << "  const image = document.querySelector('tr.failed img');\n"
+       << "  if (location.hash === '#click-test' && image) {\n"
+       << "    const widths = [image.width];\n"
+       << "    image.click();\n    widths.push(image.width);\n"
+       << "    image.click();\n    widths.push(image.width);\n"
+       << "    document.getElementById('check').textContent += `; click: ${widths.join(', ')} "
+          "px`;\n  }\n"
        << "});\n</script>\n</body></html>\n";
 
   // Several test processes may write the page at once: each writes its own temporary

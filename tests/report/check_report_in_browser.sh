@@ -2,8 +2,9 @@
 # The HTML report of `cgfs-compare --report`, loaded in a real browser (headless
 # Chromium): a student folder with one right figure, one wrong, one moved one row
 # down and one missing (its image misnamed). Checks the verdicts printed, and in
-# the browser that every image shows and that the counts at the top match the rows. Leaves a screenshot
-# in WORK_DIR/report.png. Without Chromium the browser part is skipped.
+# the browser that every image shows, that the counts at the top match the rows,
+# that a click enlarges an image and another shrinks it, and that no Markdown file is
+# linked. Leaves a screenshot in WORK_DIR/report.png. Without Chromium the browser part is skipped.
 # Usage: check_report_in_browser.sh CHAPTER_02_PROGRAM CGFS_COMPARE WORK_DIR
 set -euo pipefail
 program=$1 compare=$2 work=$3
@@ -41,6 +42,14 @@ check=$(grep -o '<p id="check">[^<]*' <<<"$dom" | sed 's/.*>//')
 echo "the browser counted: $check"
 expected="images shown: 10 of 10; rows passed: 1, failed: 2, missing: 1"
 [ "$check" = "$expected" ] || { echo "FAIL: expected '$expected'"; failed=1; }
+# A click shows a failed figure's 600-pixel image at full size, another shrinks it back.
+clicked=$(timeout 120 "$browser" "${flags[@]}" --dump-dom "$page#click-test" 2>/dev/null \
+  | grep -o '<p id="check">[^<]*' | sed 's/.*; click: //')
+echo "widths of a clicked image: $clicked"
+[ "$clicked" = "300, 600, 300 px" ] || { echo "FAIL: expected '300, 600, 300 px'"; failed=1; }
+if grep -q 'href="[^"]*\.md"' <<<"$dom"; then
+  echo "FAIL: the page links a Markdown file, which a browser shows as raw text"; failed=1
+fi
 summary=$(grep -o '<p id="summary">.*</p>' <<<"$dom" | sed 's/<[^>]*>//g')
 echo "the page says: $summary"
 [ "$summary" = "1 passed, 2 failed, 1 missing" ] || { echo "FAIL: wrong summary"; failed=1; }
