@@ -1,8 +1,10 @@
-# Summarises a ctest run of the student build, per chapter and per book function.
+# Summarises a ctest run of the student build, per chapter and per book function; a
+# chapter that does not compile gets one line and the first error.
 # Input 1: ctest's Testing/Temporary/LastTest.log (for "not written yet: Name").
 # Input 2: ctest's console lines "N/M Test #K: NAME .... Status", sorted by K.
 # A test belongs to the function its name starts with ("TraceRay keeps ...",
-# "IntersectRaySphere: ..."), else to "golden images", "pinned pixels" or "other tests".
+# "IntersectRaySphere: ..."; not "Listing 6-1 ..."), else to "golden images",
+# "pinned pixels" or "other tests".
 
 # For a failed test, the reason to print under it: the image diagnosis ("your image
 # is ours moved one row down") or else its numbers, and its first wrong pixel; else the
@@ -18,6 +20,9 @@ FNR == NR {
     current = $0
     sub(/^[0-9]+\/[0-9]+ Test: /, "", current)
     stage = 0
+  } else if (current ~ /: compiles and links$/ && !(current in reason_of) &&
+             $0 ~ /(error|undefined reference)/) {
+    reason_of[current] = trimmed($0)  # the compiler's or linker's first complaint
   } else if (match($0, /not written yet: [A-Za-z_0-9]+/)) {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)
   } else if ($0 ~ /^ *first differing pixel: / && !(current in pixel_of)) {
@@ -66,7 +71,16 @@ match($0, /Test +#[0-9]+: /) {
     no_folder[chapter] = 1
     next
   }
-  if (match(test_name, /^[A-Z][A-Za-z0-9_]*[: ]/)) {
+  if (test_name == "compiles and links") {
+    if (status != "Passed") {
+      broken[chapter] = (name in reason_of) ? reason_of[name] : "see the build log"
+    }
+    next
+  }
+  if (chapter in broken) {
+    next  # not run: the chapter did not compile
+  }
+  if (match(test_name, /^[A-Z][A-Za-z0-9_]*[: ]/) && test_name !~ /^(Listing|Figure) /) {
     group = substr(test_name, 1, RLENGTH - 1)
   } else if (test_name ~ /matches its golden image/) {
     group = "golden images"
@@ -110,10 +124,19 @@ match($0, /Test +#[0-9]+: /) {
 }
 
 END {
+  for (c = 2; c <= chapter_count; c++) {  # by number, as ctest numbers tests otherwise
+    for (d = c; d > 1 && chapters[d - 1] > chapters[d]; d--) {
+      swap = chapters[d]; chapters[d] = chapters[d - 1]; chapters[d - 1] = swap
+    }
+  }
   for (c = 1; c <= chapter_count; c++) {
     chapter = chapters[c]
     if (chapter in no_folder) {
       not_started = not_started (not_started == "" ? "" : ", ") chapter
+      continue
+    }
+    if (chapter in broken) {
+      printf "%s: does not compile, so none of its tests ran\n      %s\n", chapter, broken[chapter]
       continue
     }
     printf "%s: %d passed, %d failed, %d not written yet\n", chapter,

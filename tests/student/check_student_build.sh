@@ -7,7 +7,8 @@
 #   - a half-written copy (only CanvasToViewport and IntersectRaySphere) passes what
 #     is written and reports the rest as not written yet, by name;
 #   - a copy with one mistake fails, naming the test;
-#   - a copy that does not compile fails, and ctest afterwards does not pass;
+#   - a copy that does not compile fails with its first error, and ctest afterwards
+#     does not pass; a faithful chapter beside it is tested all the same;
 #   - a missing or misnamed folder gets one line and exit status 2.
 # Usage: check_student_build.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -77,13 +78,21 @@ check "no failure page is announced after a pass" bash -c '! grep -q "images of 
   _ "$work/out.txt"
 check "no failure page is left behind" test ! -e build-student/test-output/report.html
 
-echo "== a compile error"
+echo "== a compile error in chapter 02, beside a faithful chapter 06"
+cp -r "$source_dir/chapters/06-lines" ~/my-cgfs/
 echo 'int broken = ;' >>"$student/raytracer.cpp"
 run ~/my-cgfs
 check "a compile error fails" test $status -eq 1
-check "it says nothing was tested" says "the build failed, so nothing was tested"
+check "the chapter that does not compile is named" \
+  says "^02-basic-rays: does not compile, so none of its tests ran"
+check "its first error is given, at the student's line" \
+  says "^      .*/my-cgfs/02-basic-rays/raytracer.cpp:[0-9]+:[0-9]+: error: "
+check "the other chapter is tested all the same" says "^06-lines: [0-9]+ passed, 0 failed"
 check "ctest after the failed build does not pass" \
   bash -c '! ctest --test-dir build-student >/dev/null 2>&1'
+run ~/my-cgfs 06
+check "chapter 06 asked for alone passes: the broken 02 is not even built" test $status -eq 0
+rm -r ~/my-cgfs/06-lines
 
 echo "== folders that are not a student's chapters"
 mkdir -p ~/misnamed/02-basic-ray
