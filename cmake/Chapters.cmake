@@ -71,8 +71,9 @@ function(cgfs_add_not_written_yet target)
   foreach(library IN LISTS ARGN)
     list(APPEND objects "$<TARGET_OBJECTS:${library}>")
   endforeach()
+  find_program(CGFS_CXXFILT NAMES c++filt llvm-cxxfilt)  # readable signatures, if there
   add_custom_command(OUTPUT "${generated}"
-    COMMAND "${CMAKE_COMMAND}" "-DNM=${CMAKE_NM}" "-DOUTPUT=${generated}"
+    COMMAND "${CMAKE_COMMAND}" "-DNM=${CMAKE_NM}" "-DCXXFILT=${CGFS_CXXFILT}" "-DOUTPUT=${generated}"
       "-DOBJECTS=${objects}" -P "${PROJECT_SOURCE_DIR}/cmake/NotWrittenYet.cmake"
     DEPENDS ${objects} "${PROJECT_SOURCE_DIR}/cmake/NotWrittenYet.cmake"
     COMMENT "Finding the book functions ${target} calls that are not written yet"
@@ -127,6 +128,9 @@ function(cgfs_add_chapter chapter)
       endif()
     endforeach()
     target_include_directories(${chapter}-lib PUBLIC "${fallback}")
+    # The chapter's include folders, one per line, for scripts/check-student-headers.
+    file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/header-check/${chapter}.flags"
+      CONTENT "-I$<JOIN:$<TARGET_PROPERTY:${chapter}-lib,INCLUDE_DIRECTORIES>,\n-I>\n")
   endif()
   target_link_libraries(${chapter}-lib PUBLIC cgfs::common PRIVATE cgfs_warnings)
   if(NOT CGFS_STUDENT_DIR)

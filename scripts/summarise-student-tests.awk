@@ -23,7 +23,7 @@ FNR == NR {
   } else if (current ~ /: compiles and links$/ && !(current in reason_of) &&
              $0 ~ /(error|undefined reference)/) {
     reason_of[current] = trimmed($0)  # the compiler's or linker's first complaint
-  } else if (match($0, /not written yet: [A-Za-z_0-9]+/)) {
+  } else if (match($0, /not written yet: [A-Za-z_0-9:]+/)) {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)
   } else if ($0 ~ /^ *first differing pixel: / && !(current in pixel_of)) {
     pixel_of[current] = trimmed($0)  # an image's first wrong pixel: where, yours, ours
@@ -33,10 +33,20 @@ FNR == NR {
     reason_of[current] = trimmed($0)
   } else if ($0 ~ /: FAILED:$/) {
     stage = 1
+  } else if ((stage == 1 || stage == 2) && $0 ~ /^ *due to unexpected exception with messages?:/) {
+    stage = 4
+  } else if (stage == 4 && $0 ~ /^  /) {
+    # e.g. "written with another signature: ...", over as many lines as Catch wrapped it to
+    thrown[current] = thrown[current] (thrown[current] == "" ? "" : " ") trimmed($0)
+  } else if (stage == 4) {
+    reason_of[current] = "threw: " thrown[current]
+    stage = 0
   } else if (stage == 1 && $0 ~ /^ *explicitly with messages?:/) {
     stage = 5
-  } else if (stage == 5 && $0 ~ /^  FAIL: / && !(current in message_of)) {
+  } else if (stage == 5 && $0 ~ /^  FAIL: /) {
     message_of[current] = trimmed($0)  # an image's numbers, used when no diagnosis follows
+  } else if (stage == 5 && $0 ~ /^  / && $0 !~ /^  golden image: / && !(current in message_of)) {
+    message_of[current] = trimmed($0)  # a FAIL("...") of a test's own
   } else if (stage == 1 && $0 ~ /^  [A-Z_]+\(/) {
     check_of[current] = trimmed($0)
     stage = 2
@@ -112,7 +122,10 @@ match($0, /Test +#[0-9]+: /) {
     failed[key]++
     chapter_failed[chapter]++
     failures[key] = failures[key] "      " status ": " test_name "\n"
-    if (name in reason_of) {
+    if ((name in reason_of) && ((chapter, reason_of[name]) in reason_given)) {
+      failures[key] = failures[key] "        (the same reason)\n"
+    } else if (name in reason_of) {
+      reason_given[chapter, reason_of[name]] = 1
       failures[key] = failures[key] "        " reason_of[name] "\n"
     } else if (name in message_of) {
       failures[key] = failures[key] "        " message_of[name] "\n"

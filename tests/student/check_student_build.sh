@@ -7,6 +7,8 @@
 #   - a half-written copy (only CanvasToViewport and IntersectRaySphere) passes what
 #     is written and reports the rest as not written yet, by name;
 #   - a copy with one mistake fails, naming the test;
+#   - a header or a definition with another signature than ours fails, naming both;
+#   - chapter 02 copied forward as 03 without our new header is told to take it;
 #   - a copy that does not compile fails with its first error, and ctest afterwards
 #     does not pass; a faithful chapter beside it is tested all the same;
 #   - a missing or misnamed folder gets one line and exit status 2.
@@ -77,6 +79,36 @@ check "the fixed chapter passes" test $status -eq 0
 check "no failure page is announced after a pass" bash -c '! grep -q "images of the failed" "$1"' \
   _ "$work/out.txt"
 check "no failure page is left behind" test ! -e build-student/test-output/report.html
+
+echo "== a header with another signature: TraceRay takes its vectors by value"
+by_value='s/^Color TraceRay(const Vec3& O, const Vec3& D,/Color TraceRay(Vec3 O, Vec3 D,/'
+sed -i "$by_value" "$student/raytracer.h" "$student/raytracer.cpp"
+check "the signature is changed" grep -q "^Color TraceRay(Vec3 O, Vec3 D," "$student/raytracer.h"
+run ~/my-cgfs 02
+check "a header unlike ours fails" test $status -eq 1
+check "it is named at the student's line, with both signatures" \
+  says "/my-cgfs/02-basic-rays/raytracer.h:[0-9]+: TraceRay written with another signature: yours \`.*TraceRay\(.*Vec3, .*Vec3, double, double, const Scene&\)\`, the tests need \`Color TraceRay\(const Vec3& O"
+check "the run says why it fails" says "the run fails until they match"
+cp "$ours/raytracer.h" "$ours/raytracer.cpp" "$student/"
+
+echo "== a .cpp with another signature: TraceRay's t_min and t_max as float"
+sed -i 's/^Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max,/Color TraceRay(const Vec3\& O, const Vec3\& D, float t_min, float t_max,/' \
+  "$student/raytracer.cpp"
+check "the signature is changed" grep -q "float t_min, float t_max" "$student/raytracer.cpp"
+run ~/my-cgfs 02
+check "a definition unlike the header fails" test $status -eq 1
+check "its tests say so, with both signatures" \
+  says "threw: written with another signature: yours is TraceRay\(.*float, float.*\), the tests need TraceRay\(.*double, double"
+cp "$ours/raytracer.cpp" "$student/"
+
+echo "== moving on: chapter 02 copied forward as 03, its headers not updated"
+cp -r "$student" ~/my-cgfs/03-light
+run ~/my-cgfs 03
+check "a copied-forward header unlike ours fails" test $status -eq 1
+check "the missing function is named" says "^03-light: ComputeLighting is not declared in your headers"
+check "the copied-forward header is named" \
+  says "^03-light: your raytracer.h is your chapter 02-basic-rays's, and this chapter changes it"
+rm -r ~/my-cgfs/03-light
 
 echo "== a compile error in chapter 02, beside a faithful chapter 06"
 cp -r "$source_dir/chapters/06-lines" ~/my-cgfs/
