@@ -1,6 +1,7 @@
 #include "bvh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace {
@@ -51,7 +52,82 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   nodes_.reserve(objects.size());
   if (count > 0) {
     Build(0, count, boxes, 1);
+    root_ = Pack(0);
   }
+}
+
+namespace {
+
+// A float at or below v, and one at or above: the float box holds the double one.
+float Down(double v) {
+  const float f = static_cast<float>(v);
+  return f > v ? std::nextafter(f, -HUGE_VALF) : f;
+}
+
+float Up(double v) {
+  const float f = static_cast<float>(v);
+  return f < v ? std::nextafter(f, HUGE_VALF) : f;
+}
+
+// A ray as the packed nodes test it: per axis, 1/D and which bound of a slab the
+// ray meets first (the max when D < 0).
+struct SlabRay {
+  Vec3 O;
+  Vec3 inv_D;
+  int first[3];
+};
+
+SlabRay MakeSlabRay(const Ray& ray) {
+  SlabRay slab{ray.O, 1.0 / ray.D, {}};
+  for (int axis = 0; axis < 3; ++axis) {
+    slab.first[axis] = std::signbit(slab.inv_D[axis]) ? 1 : 0;
+  }
+  return slab;
+}
+
+// RayHitsBox for the two children of a packed node at once, on their float boxes, in
+// the same double arithmetic with the slab bounds taken in the order the ray meets
+// them instead of sorted after. A ray parallel to a slab (1/D = +-inf) gets -inf or
+// +inf from it, or NaN exactly on its boundary, which std::max and std::min as called
+// here ignore: the same answers as RayHitsBox's test for D = 0.
+inline void RayHitsChildren(const float (&bounds)[2][3][2], const SlabRay& ray, double t_min,
+                            double t_max, double (&enter)[2], bool (&hits)[2]) {
+  double near[2] = {t_min, t_min};
+  double far[2] = {t_max, t_max};
+  for (int axis = 0; axis < 3; ++axis) {
+    const int first = ray.first[axis];
+    for (int c = 0; c < 2; ++c) {
+      near[c] = std::max(near[c], (bounds[first][axis][c] - ray.O[axis]) * ray.inv_D[axis]);
+      far[c] = std::min(far[c], (bounds[1 - first][axis][c] - ray.O[axis]) * ray.inv_D[axis]);
+    }
+  }
+  for (int c = 0; c < 2; ++c) {
+    enter[c] = near[c];
+    hits[c] = near[c] <= far[c];
+  }
+}
+
+}  // namespace
+
+// Appends node's subtree to packed_ (inner nodes) and leaves_; its child reference.
+int Bvh::Pack(int node) {
+  if (nodes_[node].count > 0) {
+    leaves_.push_back({nodes_[node].first, nodes_[node].count});
+    return ~static_cast<int>(leaves_.size() - 1);
+  }
+  const int index = static_cast<int>(packed_.size());
+  packed_.emplace_back();
+  const int children[2] = {node + 1, nodes_[node].second_child};
+  for (int c = 0; c < 2; ++c) {
+    const Box& box = nodes_[children[c]].box;
+    for (int axis = 0; axis < 3; ++axis) {
+      packed_[index].bounds[0][axis][c] = Down(box.min[axis]);
+      packed_[index].bounds[1][axis][c] = Up(box.max[axis]);
+    }
+    const int child = Pack(children[c]);  // may move packed_: index, not a reference
+    packed_[index].child[c] = child;
+  }
+  return index;
 }
 
 // Appends the node of order_[first, first + count) and its subtree: a leaf when few
@@ -211,74 +287,92 @@ double Bvh::SurfaceAreaCost() const {
   return cost;
 }
 
-// Visits the nodes whose box the ray enters no later than the best hit so far, the
-// nearer child first, so that the farther one is often skipped. The tree's depth,
-// and so the stack, stays under 64 (Build) for any scene that fits in memory.
-Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
-  Hit best;
-  object = -1;
-  if (nodes_.size() == 1) {  // all in one leaf: a box around a list only costs a test
-    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
-      if (hit.t < best.t) {
-        best = hit;
-        object = candidate;
-      }
-    }
-    return best;
+// Walks the nodes whose box the ray enters within [t_min, min(t_max, best)], the
+// nearer child first, so that the farther one is often skipped, and calls visit(leaf)
+// for each leaf reached; stops when visit returns true. `best` is read at every step:
+// Closest narrows it as it finds hits. The tree's depth, and so the stack, stays
+// under 64 (Build) for any scene that fits in memory.
+template <typename Visit>
+void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit) const {
+  const SlabRay slab = MakeSlabRay(ray);
+  double t_root = 0;
+  if (!RayHitsBox(nodes_[0].box, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
+    return;
   }
-  const Vec3 inv_D = 1.0 / ray.D;
   struct Entry {
-    int node;
+    int child;
     double t_enter;
   };
   Entry stack[64];
   int size = 0;
-  double t_root = 0;
-  if (!order_.empty() && RayHitsBox(nodes_[0].box, ray.O, ray.D, inv_D, t_min, t_max, t_root)) {
-    stack[size++] = {0, t_root};
-  }
+  stack[size++] = {root_, t_root};
   while (size > 0) {
-    const Entry entry = stack[--size];
-    if (entry.t_enter > best.t) {
-      continue;  // a nearer hit was found since this node was pushed
-    }
-    const Node& node = nodes_[entry.node];
-    if (node.count > 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) {
-        const int candidate = order_[i];
-        const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
-        // On a tie the lower index wins, as in the plain loop, which keeps the first.
-        if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
-          best = hit;
-          object = candidate;
-        }
+    Entry entry = stack[--size];
+    // Down the nearer child, the farther one left on the stack, until a leaf.
+    while (entry.child >= 0 && entry.t_enter <= best) {
+      const PackedNode& node = packed_[entry.child];
+      double enter[2];
+      bool hits[2];
+      RayHitsChildren(node.bounds, slab, t_min, std::min(t_max, best), enter, hits);
+      const int near = (hits[1] && (!hits[0] || enter[1] < enter[0])) ? 1 : 0;
+      if (!hits[near]) {
+        entry.t_enter = cgfs::kInf;  // neither child: back to the stack
+        break;
       }
-      continue;
-    }
-    const int children[2] = {entry.node + 1, node.second_child};
-    double enter[2] = {cgfs::kInf, cgfs::kInf};
-    bool hits[2] = {false, false};
-    for (int c = 0; c < 2; ++c) {
-      hits[c] = RayHitsBox(nodes_[children[c]].box, ray.O, ray.D, inv_D, t_min,
-                           std::min(t_max, best.t), enter[c]);
-    }
-    const int near = (hits[1] && (!hits[0] || enter[1] < enter[0])) ? 1 : 0;
-    for (const int c : {1 - near, near}) {
-      if (hits[c]) {
-        stack[size++] = {children[c], enter[c]};
+      if (hits[1 - near]) {
+        stack[size++] = {node.child[1 - near], enter[1 - near]};
       }
+      entry = {node.child[near], enter[near]};
+    }
+    // A leaf the ray enters before the best hit so far (it may have got nearer since
+    // the leaf was put on the stack).
+    if (entry.child < 0 && entry.t_enter <= best && visit(leaves_[~entry.child])) {
+      return;
     }
   }
+}
+
+Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
+  Hit best;
+  object = -1;
+  if (order_.empty()) {
+    return best;
+  }
+  const auto test = [&](int candidate) {
+    const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
+    // On a tie the lower index wins, as in the plain loop, which keeps the first.
+    if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
+      best = hit;
+      object = candidate;
+    }
+  };
+  if (root_ < 0) {  // all in one leaf: a box around a list only costs a test
+    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
+      test(candidate);
+    }
+    return best;
+  }
+  Walk(ray, t_min, t_max, best.t, [&](const Leaf& leaf) {
+    for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
+      test(order_[i]);
+    }
+    return false;
+  });
   return best;
 }
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   object = -1;
-  if (nodes_.size() == 1) {
+  const auto hits = [&](int candidate) {
+    if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
+      object = candidate;
+      return true;
+    }
+    return false;
+  };
+  if (root_ < 0) {
     for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
-        object = candidate;
+      if (hits(candidate)) {
         return true;
       }
     }
@@ -287,28 +381,13 @@ bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   if (order_.empty()) {
     return false;
   }
-  const Vec3 inv_D = 1.0 / ray.D;
-  int stack[64];
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0) {
-    const int index = stack[--size];
-    const Node& node = nodes_[index];
-    double t_enter = 0;
-    if (!RayHitsBox(node.box, ray.O, ray.D, inv_D, t_min, t_max, t_enter)) {
-      continue;
-    }
-    if (node.count > 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) {
-        if (objects_[order_[i]]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
-          object = order_[i];
-          return true;
-        }
+  Walk(ray, t_min, t_max, t_max, [&](const Leaf& leaf) {
+    for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
+      if (hits(order_[i])) {
+        return true;
       }
-      continue;
     }
-    stack[size++] = node.second_child;
-    stack[size++] = index + 1;
-  }
-  return false;
+    return false;
+  });
+  return object >= 0;
 }

@@ -46,9 +46,28 @@ class Bvh {
                          const std::vector<Box>& boxes);
   int SplitAtMedian(int first, int count, const Box& centres, const std::vector<Box>& boxes);
 
+  // The tree as the rays walk it: an inner node holds its two children's boxes side
+  // by side, in float rounded outwards (a box can only grow, so no hit is lost), so
+  // that one 64-byte line serves both box tests. A child is an inner node's index, or
+  // ~i for leaves_[i].
+  struct alignas(64) PackedNode {
+    float bounds[2][3][2];  // [min or max][axis][child]
+    int child[2];
+  };
+  struct Leaf {
+    int first = 0;  // the objects order_[first, first + count)
+    int count = 0;
+  };
+  int Pack(int node);
+  template <typename Visit>
+  void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
+
   std::vector<const Object*> objects_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
+  std::vector<PackedNode> packed_;
+  std::vector<Leaf> leaves_;
+  int root_ = 0;  // the root as a child reference: 0, or ~0 when the root is a leaf
   int depth_ = 0;
 };
 
