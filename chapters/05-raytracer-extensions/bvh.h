@@ -41,10 +41,34 @@ class Bvh {
     int count = 0;  // 0 for an inner node
     int second_child = 0;
   };
-  void Build(int first, int count, const std::vector<Box>& boxes, int depth);
-  int SplitBySurfaceArea(int first, int count, const Box& box, const Box& centres,
-                         const std::vector<Box>& boxes);
-  int SplitAtMedian(int first, int count, const Box& centres, const std::vector<Box>& boxes);
+  // What the build needs of each object, computed once (bvh_build.cpp).
+  struct Bound {
+    Box box;
+    Vec3 centre;
+    double area;
+    int object;  // its index in objects_
+  };
+  // A group of objects as the build sees it: their box, the box of their centres, how
+  // many, and the areas of the two largest. The build gets a node's group from the
+  // split of its parent, without going over its objects again.
+  struct Group {
+    Box box;
+    Box centres;
+    int count = 0;
+    double largest = 0;
+    double second = 0;
+    void Add(const Bound& bound);
+    void Add(const Group& other);
+  };
+  Group Summarise(int first, int count, const std::vector<Bound>& items) const;
+  void Build(int first, const Group& group, std::vector<Bound>& items, int depth);
+  // Each reorders the items from `first` on and returns how many objects go to the first
+  // child (0: none, make a leaf), with both children's groups.
+  int SplitOffLargest(int first, const Group& group, std::vector<Bound>& items,
+                      Group (&children)[2]);
+  int SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& items,
+                         Group (&children)[2]);
+  int SplitAtMedian(int first, const Group& group, std::vector<Bound>& items, Group (&children)[2]);
 
   // The tree as the rays walk it: an inner node holds its two children's boxes side
   // by side, in float rounded outwards (a box can only grow, so no hit is lost), so
@@ -62,7 +86,15 @@ class Bvh {
   template <typename Visit>
   void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
 
+  // Object `index`'s hit. Spheres, the usual leaves, are tested without a virtual call.
+  Hit Intersect(int index, const Ray& ray, double t_min, double t_max) const {
+    const Sphere* sphere = spheres_[index];
+    return sphere != nullptr ? sphere->Intersect(ray, t_min, t_max)
+                             : objects_[index]->Intersect(ray, t_min, t_max);
+  }
+
   std::vector<const Object*> objects_;
+  std::vector<const Sphere*> spheres_;  // objects_[i] if it is a sphere, else nullptr
   std::vector<Node> nodes_;
   std::vector<int> order_;
   std::vector<PackedNode> packed_;

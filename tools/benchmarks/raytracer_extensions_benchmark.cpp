@@ -5,6 +5,7 @@
 //   SphereField/<count>/<bvh>      the sphere fields at 600x600, one thread
 //   SphereFieldSmall/<count>/<bvh> the same at 150x150, where the plain loop can
 //                                  still be timed at 10 000 spheres
+//   BvhBuild/<count>               building the hierarchy over a sphere field
 //   SphereFieldPrimary/<count>     only the primary rays at 600x600, one thread:
 //                                  our hierarchy, and Embree's where it is installed
 #include <benchmark/benchmark.h>
@@ -183,6 +184,15 @@ void RegisterAll() {
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
     }
+    benchmark::RegisterBenchmark(("BvhBuild/" + n).c_str(),
+                                 [field](benchmark::State& state) {
+                                   for (auto _ : state) {
+                                     const Bvh bvh(field->objects);
+                                     benchmark::DoNotOptimize(bvh.NodeCount());
+                                   }
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
     benchmark::RegisterBenchmark(
         ("SphereFieldPrimary/" + n + "/ours").c_str(),
         [field](benchmark::State& state) { TracePrimaryRays(state, *field, 600); })

@@ -1,0 +1,302 @@
+// Building the bounding-volume hierarchy (bvh.h): which objects go together.
+#include "bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace {
+
+// "Hierarchical Structures" with the surface area heuristic: a ray that enters a box
+// enters a child of it with probability (child's area) / (box's area), so a split
+// costs one more box test plus, for each child, that probability times its objects'
+// tests. The build tries kBins planes along each axis, keeps the cheapest, and makes a
+// leaf where no split is cheaper than testing every object (at most kMaxLeaf of them).
+constexpr int kBins = 16;
+// So few objects are a leaf whatever the heuristic says: a small scene is then one
+// leaf, which Closest and Any loop over without any box test.
+constexpr int kSmallLeaf = 4;
+constexpr int kMaxLeaf = 8;
+constexpr double kBoxTestCost = 1;  // relative to one object test
+constexpr double kObjectTestCost = 1;
+
+Vec3 Centre(const Box& box) {
+  return (box.min + box.max) * 0.5;
+}
+
+double SurfaceArea(const Box& box) {
+  const Vec3 size = box.max - box.min;
+  return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
+}
+
+// Union, in place: the build grows millions of boxes.
+inline void Grow(Box& box, const Box& other) {
+  for (int axis = 0; axis < 3; ++axis) {
+    box.min[axis] = std::min(box.min[axis], other.min[axis]);
+    box.max[axis] = std::max(box.max[axis], other.max[axis]);
+  }
+}
+
+int LongestAxis(const Vec3& size) {
+  if (size.x >= size.y && size.x >= size.z) {
+    return 0;
+  }
+  return size.y >= size.z ? 1 : 2;
+}
+
+// Which of kBins equal slices of the centres' box, along an axis, a centre falls in.
+struct Binning {
+  Vec3 min;
+  Vec3 scale;  // kBins / extent; 0 along an axis where all centres coincide
+  int Of(const Vec3& centre, int axis) const {
+    return std::min(kBins - 1, static_cast<int>((centre[axis] - min[axis]) * scale[axis]));
+  }
+};
+
+// The objects whose centres fall in one slice, for the heuristic: their box and count.
+struct Bin {
+  Box box;
+  int count = 0;
+};
+
+struct Plane {
+  double cost = cgfs::kInf;
+  int index = 0;  // the first child takes bins [0, index)
+};
+
+// The plane between two bins of one axis that the surface area heuristic prefers.
+template <typename Bins>
+Plane CheapestPlane(const Bins& bins, double area) {
+  // Right of plane p: bins [p, kBins), swept from the right first.
+  double right_area[kBins] = {};
+  int right_count[kBins] = {};
+  Box right;
+  int n = 0;
+  for (int p = kBins - 1; p > 0; --p) {
+    Grow(right, bins[p].box);
+    n += bins[p].count;
+    right_area[p] = SurfaceArea(right);
+    right_count[p] = n;
+  }
+  Plane best;
+  Box left;
+  n = 0;
+  for (int p = 1; p < kBins; ++p) {
+    Grow(left, bins[p - 1].box);
+    n += bins[p - 1].count;
+    if (n == 0 || right_count[p] == 0) {
+      continue;
+    }
+    const double cost = kBoxTestCost + (SurfaceArea(left) * n + right_area[p] * right_count[p]) /
+                                           area * kObjectTestCost;
+    if (cost < best.cost) {
+      best = {cost, p};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void Bvh::Group::Add(const Bound& bound) {
+  Grow(box, bound.box);
+  Grow(centres, {bound.centre, bound.centre});
+  ++count;
+  if (bound.area > largest) {
+    second = largest;
+    largest = bound.area;
+  } else {
+    second = std::max(second, bound.area);
+  }
+}
+
+void Bvh::Group::Add(const Group& other) {
+  Grow(box, other.box);
+  Grow(centres, other.centres);
+  count += other.count;
+  second = std::max(std::min(largest, other.largest), std::max(second, other.second));
+  largest = std::max(largest, other.largest);
+}
+
+Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
+  // The build reorders these in place, which keeps its passes over them in memory
+  // order; order_ takes the objects' final order.
+  std::vector<Bound> items;
+  items.reserve(objects.size());
+  for (const auto& object : objects) {
+    objects_.push_back(object.get());
+    spheres_.push_back(dynamic_cast<const Sphere*>(object.get()));
+    const Box box = object->Bounds();
+    items.push_back({box, Centre(box), SurfaceArea(box), static_cast<int>(items.size())});
+  }
+  const int count = static_cast<int>(objects.size());
+  nodes_.reserve(objects.size());
+  if (count > 0) {
+    Build(0, Summarise(0, count, items), items, 1);
+    root_ = Pack(0);
+  }
+  for (const Bound& item : items) {
+    order_.push_back(item.object);
+  }
+}
+
+Bvh::Group Bvh::Summarise(int first, int count, const std::vector<Bound>& items) const {
+  Group group;
+  for (int i = first; i < first + count; ++i) {
+    group.Add(items[i]);
+  }
+  return group;
+}
+
+// Appends the node of the group's objects, items[first, first + group.count), and its
+// subtree: a leaf when few objects are left or splitting does not pay, else two
+// children, with a very large object on its own or where the surface area heuristic
+// says.
+void Bvh::Build(int first, const Group& group, std::vector<Bound>& items, int depth) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  nodes_[index].box = group.box;
+  depth_ = std::max(depth_, depth);
+  Group children[2];
+  int split = 0;
+  if (group.count > kSmallLeaf) {
+    // At most 24 levels of large objects, so that the depth, and the traversal stack
+    // with it, stays under 64 even for objects nested like Russian dolls; deep down
+    // (only nested objects get there), halves at the median centre.
+    if (depth <= 24) {
+      split = SplitOffLargest(first, group, items, children);
+    }
+    if (split == 0) {
+      split = depth < 40 ? SplitBySurfaceArea(first, group, items, children)
+                         : SplitAtMedian(first, group, items, children);
+    }
+  }
+  if (split == 0) {
+    nodes_[index].first = first;
+    nodes_[index].count = group.count;
+    return;
+  }
+  Build(first, children[0], items, depth + 1);
+  nodes_[index].second_child = static_cast<int>(nodes_.size());
+  Build(first + split, children[1], items, depth + 1);
+}
+
+// An object larger than all the others together (chapter 4's ground, a sphere of radius
+// 5000) would make every box above it as large as itself, and every ray would enter
+// them all: it gets a leaf of its own, beside the tree of the rest. The others' box is
+// at least as large as the next largest object, so only a group whose largest object
+// beats that is gone over.
+int Bvh::SplitOffLargest(int first, const Group& group, std::vector<Bound>& items,
+                         Group (&children)[2]) {
+  if (!(group.largest > group.second)) {
+    return 0;
+  }
+  int largest = first;
+  for (int i = first; i < first + group.count; ++i) {
+    if (items[i].area > items[largest].area) {
+      largest = i;
+    }
+  }
+  Box others;
+  for (int i = first; i < first + group.count; ++i) {
+    if (i != largest) {
+      Grow(others, items[i].box);
+    }
+  }
+  if (!(group.largest > SurfaceArea(others))) {
+    return 0;
+  }
+  std::swap(items[first], items[largest]);
+  children[0] = Summarise(first, 1, items);
+  children[1] = Summarise(first + 1, group.count - 1, items);
+  return 1;
+}
+
+// Reorders the group around the median centre along the axis where the centres spread
+// most.
+int Bvh::SplitAtMedian(int first, const Group& group, std::vector<Bound>& items,
+                       Group (&children)[2]) {
+  const int axis = LongestAxis(group.centres.max - group.centres.min);
+  const int half = group.count / 2;
+  std::nth_element(items.begin() + first, items.begin() + first + half,
+                   items.begin() + first + group.count, [&](const Bound& a, const Bound& b) {
+                     const double ca = a.centre[axis];
+                     const double cb = b.centre[axis];
+                     return ca < cb || (ca == cb && a.object < b.object);
+                   });
+  children[0] = Summarise(first, half, items);
+  children[1] = Summarise(first + half, group.count - half, items);
+  return half;
+}
+
+// The best place to split the group, by the surface area heuristic over kBins bins of
+// the centres along each axis, filled in one pass over the objects; the bins on each
+// side of the plane chosen are the children's groups. Objects whose centres coincide
+// cannot be split by any plane: they are halved in scene order.
+int Bvh::SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& items,
+                            Group (&children)[2]) {
+  Binning binning{group.centres.min, {0, 0, 0}};
+  for (int axis = 0; axis < 3; ++axis) {
+    const double extent = group.centres.max[axis] - group.centres.min[axis];
+    binning.scale[axis] = extent > 0 ? kBins / extent : 0;
+  }
+  std::array<std::array<Bin, kBins>, 3> bins;
+  for (int i = first; i < first + group.count; ++i) {
+    const Bound& bound = items[i];
+    for (int axis = 0; axis < 3; ++axis) {
+      Bin& bin = bins[axis][binning.Of(bound.centre, axis)];
+      Grow(bin.box, bound.box);
+      ++bin.count;
+    }
+  }
+  Plane best;
+  best.cost = group.count <= kMaxLeaf ? group.count * kObjectTestCost : cgfs::kInf;
+  int best_axis = -1;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (binning.scale[axis] > 0) {
+      const Plane plane = CheapestPlane(bins[axis], SurfaceArea(group.box));
+      if (plane.cost < best.cost) {
+        best = plane;
+        best_axis = axis;
+      }
+    }
+  }
+  if (best_axis < 0) {
+    if (group.count <= kMaxLeaf) {
+      return 0;
+    }
+    std::sort(items.begin() + first, items.begin() + first + group.count,
+              [](const Bound& a, const Bound& b) { return a.object < b.object; });
+    const int half = group.count / 2;
+    children[0] = Summarise(first, half, items);
+    children[1] = Summarise(first + half, group.count - half, items);
+    return half;
+  }
+  // Partitions the items as std::partition would, summing up each side on the way.
+  int left = first;
+  int right = first + group.count - 1;
+  while (left <= right) {
+    const Bound& bound = items[left];
+    if (binning.Of(bound.centre, best_axis) < best.index) {
+      children[0].Add(bound);
+      ++left;
+    } else {
+      children[1].Add(bound);
+      std::swap(items[left], items[right--]);
+    }
+  }
+  return children[0].count;
+}
+
+double Bvh::SurfaceAreaCost() const {
+  if (nodes_.empty()) {
+    return 0;
+  }
+  const double root = SurfaceArea(nodes_.front().box);
+  double cost = 0;
+  for (const Node& node : nodes_) {
+    const double chance = SurfaceArea(node.box) / root;
+    cost += chance * (node.count > 0 ? node.count * kObjectTestCost : 2 * kBoxTestCost);
+  }
+  return cost;
+}
