@@ -102,6 +102,26 @@ TEST_CASE("Bvh: the surface area heuristic keeps a sphere field's tree cheap", "
   CHECK(bvh.NodeCount() < 2 * 1001);
 }
 
+TEST_CASE("Bvh: a node entered just before the best hit so far is still visited",
+          "[equations]") {
+  // A big sphere, larger than all the others together, gets a leaf of its own beside
+  // the tree of the rest. The ray down the z axis enters its box first (z = 15) and
+  // hits it at z = 16; the small sphere on the axis, in the other subtree, is hit at
+  // z = 15.9995: nearer, though its node is entered only 0.003 % before 16.
+  std::vector<std::shared_ptr<Object>> objects;
+  objects.push_back(std::make_shared<Sphere>(Vec3{3, 0, 20}, 5, cgfs::kRed));
+  objects.push_back(std::make_shared<Sphere>(Vec3{0, 0, 16.0095}, 0.01, cgfs::kGreen));
+  for (int i = 0; i < 6; ++i) {  // off the ray's way, behind
+    objects.push_back(std::make_shared<Sphere>(Vec3{0.5 + 0.1 * i, 1, 17}, 0.01, cgfs::kBlue));
+  }
+  const Bvh bvh(objects);
+  REQUIRE(bvh.NodeCount() > 1);
+  int object = -1;
+  const Hit hit = bvh.Closest(Ray{{0, 0, 0}, {0, 0, 1}}, 1, cgfs::kInf, object);
+  CHECK(object == 1);
+  CHECK(hit.t == Approx(15.9995).epsilon(1e-12));
+}
+
 TEST_CASE("SphereField places the same spheres on every machine", "[equations]") {
   // The generator's arithmetic is on integers, and the conversion to double exact: its
   // first numbers for the figures' seed, and where they put the first sphere, are

@@ -64,13 +64,20 @@ TEST_CASE("the bound: one box per letter, a, e and k, holding every sphere once"
   CHECK(letters[1].count == 17);
   CHECK(letters[2].first == 34);
   CHECK(letters[2].count == 15);
-  const double e = kBoundMargin;
-  CheckNear(letters[0].box.min, {13 - e, -1 - e, 3 - e});
-  CheckNear(letters[0].box.max, {19 + e, 1 + e, 11 + e});
-  CheckNear(letters[1].box.min, {6 - e, -1 - e, 3 - e});
-  CheckNear(letters[1].box.max, {12 + e, 1 + e, 11 + e});
-  CheckNear(letters[2].box.min, {-1 - e, -1 - e, 3 - e});
-  CheckNear(letters[2].box.max, {5 + e, 1 + e, 13 + e});
+  // The tight boxes around the unit spheres, worked out from the bitmap; each box holds
+  // its tight box with a margin above 0 and below 0.01 on every side.
+  const glm::dvec3 tight[3][2] = {
+      {{13, -1, 3}, {19, 1, 11}}, {{6, -1, 3}, {12, 1, 11}}, {{-1, -1, 3}, {5, 1, 13}}};
+  for (int letter = 0; letter < 3; ++letter) {
+    for (int axis = 0; axis < 3; ++axis) {
+      INFO("letter " << letter << ", axis " << axis);
+      const Box& box = letters[static_cast<std::size_t>(letter)].box;
+      CHECK(box.min[axis] < tight[letter][0][axis]);
+      CHECK(box.min[axis] > tight[letter][0][axis] - 0.01);
+      CHECK(box.max[axis] > tight[letter][1][axis]);
+      CHECK(box.max[axis] < tight[letter][1][axis] + 0.01);
+    }
+  }
 }
 
 TEST_CASE("MayHit: the slab test of a ray against a box", "[bound]") {

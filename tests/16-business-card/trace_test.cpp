@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "checks.h"
+#include "letters.h"
 #include "trace.h"
 
 using cgfs::test::CheckNear;
@@ -84,4 +85,34 @@ TEST_CASE("Trace finds the same hit with the bound as without, for rays of every
   CHECK(hits[0] > 1000);
   CHECK(hits[1] > 1000);
   CHECK(hits[2] > 1000);
+}
+
+TEST_CASE("Trace finds the same hit with the bound as without, for rays grazing a sphere",
+          "[trace][bound]") {
+  // Through a point at distance 1 - u (u < 1e-3) from a letter sphere's centre, in a
+  // random direction: rays that only just touch the outer spheres, which a box a hair
+  // too small would lose, and random rays almost never are.
+  std::mt19937 engine(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> which(0, kLetterSphereCount - 1);
+  int sphere_hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    glm::dvec3 direction(unit(engine), unit(engine), unit(engine));
+    glm::dvec3 side(unit(engine), unit(engine), unit(engine));
+    if (glm::length(direction) < 0.1 || glm::length(glm::cross(direction, side)) < 0.1) {
+      continue;
+    }
+    direction = glm::normalize(direction);
+    side = glm::normalize(glm::cross(direction, side));
+    const glm::dvec3 touched = LetterSpheres()[static_cast<std::size_t>(which(engine))] +
+                               side * (1 - 1e-3 * (unit(engine) + 1) / 2);
+    const glm::dvec3 origin = touched - direction * 3.0;
+    double t_plain = 0, t_bounded = 0;
+    glm::dvec3 n_plain(9), n_bounded(9);
+    const HitType plain = Trace(origin, direction, t_plain, n_plain, false);
+    REQUIRE(Trace(origin, direction, t_bounded, n_bounded, true) == plain);
+    REQUIRE(t_plain == t_bounded);
+    sphere_hits += plain == HitType::Sphere;
+  }
+  CHECK(sphere_hits > 10000);
 }
