@@ -129,23 +129,28 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
   if (order_.empty()) {
     return best;
   }
-  const auto test = [&](int candidate) {
-    const Hit hit = Intersect(candidate, ray, t_min, t_max);
+  const auto test = [&](int slot) {
+    const int candidate = order_[slot];
+    const Hit hit = IntersectSlot(slot, ray, t_min, t_max);
     // On a tie the lower index wins, as in the plain loop, which keeps the first.
     if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
       best = hit;
       object = candidate;
     }
   };
-  if (root_ < 0) {  // all in one leaf: a box around a list only costs a test
+  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order, without a box test
     for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      test(candidate);
+      const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
+      if (hit.t < best.t) {
+        best = hit;
+        object = candidate;
+      }
     }
     return best;
   }
   Walk(ray, t_min, t_max, best.t, [&](const Leaf& leaf) {
-    for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
-      test(order_[i]);
+    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+      test(slot);
     }
     return false;
   });
@@ -154,16 +159,10 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   object = -1;
-  const auto hits = [&](int candidate) {
-    if (Intersect(candidate, ray, t_min, t_max).t < cgfs::kInf) {
-      object = candidate;
-      return true;
-    }
-    return false;
-  };
-  if (root_ < 0) {
+  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order
     for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      if (hits(candidate)) {
+      if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
+        object = candidate;
         return true;
       }
     }
@@ -173,8 +172,9 @@ bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
     return false;
   }
   Walk(ray, t_min, t_max, t_max, [&](const Leaf& leaf) {
-    for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
-      if (hits(order_[i])) {
+    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+      if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
+        object = order_[slot];
         return true;
       }
     }

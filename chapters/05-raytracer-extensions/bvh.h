@@ -86,15 +86,20 @@ class Bvh {
   template <typename Visit>
   void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
 
-  // Object `index`'s hit. Spheres, the usual leaves, are tested without a virtual call.
-  Hit Intersect(int index, const Ray& ray, double t_min, double t_max) const {
-    const Sphere* sphere = spheres_[index];
-    return sphere != nullptr ? sphere->Intersect(ray, t_min, t_max)
-                             : objects_[index]->Intersect(ray, t_min, t_max);
+  // The hit of the object in leaf slot `slot`, order_[slot]. Spheres, the usual leaves,
+  // are tested without a virtual call.
+  Hit IntersectSlot(int slot, const Ray& ray, double t_min, double t_max) const {
+    const int sphere = slot_spheres_[slot];
+    return sphere >= 0 ? spheres_[sphere].Intersect(ray, t_min, t_max)
+                       : objects_[order_[slot]]->Intersect(ray, t_min, t_max);
   }
 
   std::vector<const Object*> objects_;
-  std::vector<const Sphere*> spheres_;  // objects_[i] if it is a sphere, else nullptr
+  // Copies of the spheres, in leaf order, so that a leaf's spheres lie side by side in
+  // memory instead of wherever the scene's are (a hit names its copy, which looks the
+  // same); slot_spheres_[slot] is the copy of objects_[order_[slot]], or -1.
+  std::vector<Sphere> spheres_;
+  std::vector<int> slot_spheres_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
   std::vector<PackedNode> packed_;

@@ -125,7 +125,6 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   items.reserve(objects.size());
   for (const auto& object : objects) {
     objects_.push_back(object.get());
-    spheres_.push_back(dynamic_cast<const Sphere*>(object.get()));
     const Box box = object->Bounds();
     items.push_back({box, Centre(box), SurfaceArea(box), static_cast<int>(items.size())});
   }
@@ -135,8 +134,14 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
     Build(0, Summarise(0, count, items), items, 1);
     root_ = Pack(0);
   }
+  spheres_.reserve(items.size());
   for (const Bound& item : items) {
     order_.push_back(item.object);
+    const auto* sphere = dynamic_cast<const Sphere*>(objects_[item.object]);
+    slot_spheres_.push_back(sphere != nullptr ? static_cast<int>(spheres_.size()) : -1);
+    if (sphere != nullptr) {
+      spheres_.push_back(*sphere);
+    }
   }
 }
 
