@@ -17,6 +17,7 @@ constexpr int kBins = 16;
 // leaf, which Closest and Any loop over without any box test.
 constexpr int kSmallLeaf = 4;
 constexpr int kMaxLeaf = 8;
+constexpr int kLargeGroup = 4096;
 constexpr double kBoxTestCost = 1;  // relative to one object test
 constexpr double kObjectTestCost = 1;
 
@@ -240,18 +241,24 @@ int Bvh::SplitAtMedian(int first, const Group& group, std::vector<Bound>& items,
 // cannot be split by any plane: they are halved in scene order.
 int Bvh::SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& items,
                             Group (&children)[2]) {
+  // A large group is binned only along the axis where its centres spread most: a third
+  // of the work, where the cuts are all much the same.
+  const int longest = LongestAxis(group.centres.max - group.centres.min);
   Binning binning{group.centres.min, {0, 0, 0}};
   for (int axis = 0; axis < 3; ++axis) {
     const double extent = group.centres.max[axis] - group.centres.min[axis];
-    binning.scale[axis] = extent > 0 ? kBins / extent : 0;
+    const bool binned = group.count <= kLargeGroup || axis == longest;
+    binning.scale[axis] = extent > 0 && binned ? kBins / extent : 0;
   }
   std::array<std::array<Bin, kBins>, 3> bins;
   for (int i = first; i < first + group.count; ++i) {
     const Bound& bound = items[i];
     for (int axis = 0; axis < 3; ++axis) {
-      Bin& bin = bins[axis][binning.Of(bound.centre, axis)];
-      Grow(bin.box, bound.box);
-      ++bin.count;
+      if (binning.scale[axis] > 0) {
+        Bin& bin = bins[axis][binning.Of(bound.centre, axis)];
+        Grow(bin.box, bound.box);
+        ++bin.count;
+      }
     }
   }
   Plane best;
