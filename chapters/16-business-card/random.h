@@ -16,9 +16,26 @@ class Random {
 
   // The card's R(). A float, as on the card: 24 random bits are plenty for where a
   // ray starts and aims, and this engine makes 24 at a time (a double would take 3).
-  double Rand() { return uniform_(engine_); }
+  // Numbers given to Preset come first.
+  double Rand() {
+    if (presets_ > 0) {
+      return preset_[2 - presets_--];
+    }
+    return uniform_(engine_);
+  }
+
+  // The next two Rand() give u and v: the stratified card's point of the light for a
+  // sample's first hit (render.h). ClearPreset forgets them if no hit used them.
+  void Preset(double u, double v) {
+    preset_[0] = u;
+    preset_[1] = v;
+    presets_ = 2;
+  }
+  void ClearPreset() { presets_ = 0; }
 
  private:
+  double preset_[2] = {0, 0};
+  int presets_ = 0;
   // A generator is made for every pixel, so it must be quick to make: this one of
   // the standard library has 24 numbers of state (std::mt19937 has 624; with it the
   // card took 7 times as long at one sample per pixel, see README.md).
