@@ -1,7 +1,9 @@
 #include "render.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -36,45 +38,83 @@ SampleNumbers CardNumbers(Random& random) {
   return numbers;
 }
 
-// Stratified (RenderSettings::stratified): n x n cells, each dimension pair through its
-// own shuffle of them.
+// Low-discrepancy (RenderSettings::stratified): the first `samples` points of the 6-D
+// Sobol sequence (direction numbers of Joe and Kuo), each dimension XOR-scrambled with
+// bits drawn for the pixel. Dimensions 1-2 place the sample in the pixel, 3-4 on the
+// lens, 5-6 on the light: the points of any power of two fill every such pair's cells
+// evenly, and the scrambling keeps neighbouring pixels from repeating one pattern.
 class Strata {
  public:
-  Strata(int samples, Random& random) : n_(static_cast<int>(std::lround(std::sqrt(samples)))) {
-    if (n_ * n_ != samples) {
-      throw cgfs::Error("stratified samples must be a square number, not " +
+  Strata(int samples, Random& random) {
+    if (samples <= 0) {
+      throw cgfs::Error("low-discrepancy samples must be a power of two, not " +
                         std::to_string(samples));
     }
-    for (std::vector<int>* cells : {&lens_, &light_}) {
-      cells->resize(static_cast<std::size_t>(samples));
-      for (int i = 0; i < samples; ++i) {
-        (*cells)[static_cast<std::size_t>(i)] = i;
-      }
-      for (int i = samples - 1; i > 0; --i) {  // Fisher and Yates
-        const int j = std::min(i, static_cast<int>(random.Rand() * (i + 1)));
-        std::swap((*cells)[static_cast<std::size_t>(i)], (*cells)[static_cast<std::size_t>(j)]);
-      }
+    for (std::uint32_t& bits : scramble_) {
+      bits = static_cast<std::uint32_t>(random.Rand() * 65536.0) << 16 |
+             static_cast<std::uint32_t>(random.Rand() * 65536.0);
     }
   }
 
-  SampleNumbers Numbers(int sample, Random& random) const {
+  SampleNumbers Numbers(int sample, Random&) const {
+    double u[6];
+    for (int d = 0; d < 6; ++d) {
+      std::uint32_t x = scramble_[d];
+      for (int bit = 0; bit < 32 && (sample >> bit) != 0; ++bit) {
+        if ((sample >> bit) & 1) {
+          x ^= Directions()[d][bit];
+        }
+      }
+      u[d] = x * 0x1p-32;
+    }
     SampleNumbers numbers{};
-    Point(lens_[static_cast<std::size_t>(sample)], random, numbers.lens_a, numbers.lens_b);
-    Point(sample, random, numbers.pixel_x, numbers.pixel_y);
+    numbers.pixel_x = u[0];
+    numbers.pixel_y = u[1];
+    numbers.lens_a = u[2];
+    numbers.lens_b = u[3];
     numbers.has_light = true;
-    Point(light_[static_cast<std::size_t>(sample)], random, numbers.light_x, numbers.light_y);
+    numbers.light_x = u[4];
+    numbers.light_y = u[5];
     return numbers;
   }
 
  private:
-  // A random point of cell `cell` of the n x n grid over [0, 1)².
-  void Point(int cell, Random& random, double& u, double& v) const {
-    u = (cell % n_ + random.Rand()) / n_;
-    v = (cell / n_ + random.Rand()) / n_;
+  using Table = std::array<std::array<std::uint32_t, 32>, 6>;
+  static const Table& Directions() {
+    static const Table table = [] {
+      Table v{};
+      for (int i = 0; i < 32; ++i) {
+        v[0][i] = 1U << (31 - i);  // van der Corput
+      }
+      // Dimensions 2 to 6: degree s, coefficients a, initial m (Joe and Kuo).
+      struct Polynomial {
+        int s, a;
+        std::uint32_t m[4];
+      };
+      const Polynomial polynomials[5] = {
+          {1, 0, {1}}, {2, 1, {1, 3}}, {3, 1, {1, 3, 1}}, {3, 2, {1, 1, 1}}, {4, 1, {1, 1, 3, 3}}};
+      for (int d = 1; d < 6; ++d) {
+        const Polynomial& p = polynomials[d - 1];
+        for (int i = 0; i < 32; ++i) {
+          if (i < p.s) {
+            v[d][i] = p.m[i] << (31 - i);
+            continue;
+          }
+          std::uint32_t value = v[d][i - p.s] ^ (v[d][i - p.s] >> p.s);
+          for (int k = 1; k < p.s; ++k) {
+            if ((p.a >> (p.s - 1 - k)) & 1) {
+              value ^= v[d][i - k];
+            }
+          }
+          v[d][i] = value;
+        }
+      }
+      return v;
+    }();
+    return table;
   }
 
-  int n_;
-  std::vector<int> lens_, light_;
+  std::uint32_t scramble_[6];
 };
 
 }  // namespace

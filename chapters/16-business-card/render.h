@@ -10,7 +10,7 @@
 
 inline constexpr int kCardSamples = 64;
 // The stratified card's samples per pixel: as little noise as the card's 64 (README.md).
-inline constexpr int kStratifiedSamples = 16;
+inline constexpr int kStratifiedSamples = 28;
 
 struct RenderSettings {
   int samples = kCardSamples;  // per pixel

@@ -18,8 +18,8 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
        [one_sample](cgfs::Canvas& canvas) { Render(canvas, one_sample); }},
       {"business-card-stratified",
        std::to_string(kStratifiedSamples) +
-           " stratified samples per pixel: as little noise as the card's 64, in a "
-           "quarter of the time",
+           " low-discrepancy samples per pixel: less noise than the card's 64, in "
+           "under half the time",
        [stratified](cgfs::Canvas& canvas) { Render(canvas, stratified); }},
   };
 }

@@ -73,6 +73,69 @@ TEST_CASE("business-card matches its golden image and has the original card's st
   cgfs::test::CheckImageAgainstGolden(CGFS_CHAPTER, "business-card", card.GetImage());
 }
 
+TEST_CASE("business-card-stratified matches its golden image", "[golden]") {
+  cgfs::test::CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "business-card-stratified");
+}
+
+namespace {
+
+// Each channel's mean over the image, and its root-mean-square difference from another.
+struct Statistics {
+  double mean[3] = {0, 0, 0};
+  double rms_against = 0;
+};
+
+Statistics Measure(const cgfs::Canvas& image, const cgfs::Canvas& reference) {
+  Statistics result;
+  double squares = 0;
+  const int w = image.Width(), h = image.Height();
+  for (int y = -h / 2; y < h / 2; ++y) {
+    for (int x = -w / 2; x < w / 2; ++x) {
+      const Rgb8 a = image.GetPixel(x, y), b = reference.GetPixel(x, y);
+      const int channels[3][2] = {{a.r, b.r}, {a.g, b.g}, {a.b, b.b}};
+      for (int c = 0; c < 3; ++c) {
+        result.mean[c] += channels[c][0];
+        squares += (channels[c][0] - channels[c][1]) * (channels[c][0] - channels[c][1]);
+      }
+    }
+  }
+  for (double& mean : result.mean) {
+    mean /= w * h;
+  }
+  result.rms_against = std::sqrt(squares / (3.0 * w * h));
+  return result;
+}
+
+}  // namespace
+
+TEST_CASE("the stratified card: the card's mean, and no more noise than its 64 samples",
+          "[render]") {
+  // At 128 x 128, against 256 independent samples of another seed: the reference's own
+  // noise weighs on both comparisons alike.
+  RenderSettings reference_settings;
+  reference_settings.samples = 256;
+  reference_settings.seed = 99;
+  reference_settings.optimizations = AllOptimizations();
+  const cgfs::Canvas reference = RenderCard(128, 128, reference_settings);
+  RenderSettings card;
+  card.optimizations = AllOptimizations();
+  RenderSettings stratified = card;
+  stratified.samples = kStratifiedSamples;
+  stratified.stratified = true;
+  const Statistics ours = Measure(RenderCard(128, 128, stratified), reference);
+  const Statistics cards = Measure(RenderCard(128, 128, card), reference);
+  INFO("rms against the reference: stratified " << ours.rms_against << ", card "
+                                                 << cards.rms_against);
+  CHECK(ours.rms_against <= cards.rms_against);
+  for (int c = 0; c < 3; ++c) {
+    CHECK(std::abs(ours.mean[c] - cards.mean[c]) <= 1);
+  }
+  // Independent samples, as few, are noisier: the stratification is what pays.
+  RenderSettings few = card;
+  few.samples = kStratifiedSamples;
+  CHECK(Measure(RenderCard(128, 128, few), reference).rms_against > 1.15 * ours.rms_against);
+}
+
 TEST_CASE("business-card-1-sample matches its golden image", "[golden]") {
   cgfs::test::CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "business-card-1-sample");
 }
