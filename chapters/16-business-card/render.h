@@ -9,20 +9,19 @@
 #include "sample.h"
 
 inline constexpr int kCardSamples = 64;
-// The stratified card's samples per pixel: as little noise as the card's 64 (README.md).
+// The stratified card's samples per pixel: the fewest with less noise than the card's
+// 64 independent ones (README.md, "Fewer samples, placed better").
 inline constexpr int kStratifiedSamples = 28;
 
 struct RenderSettings {
   int samples = kCardSamples;  // per pixel
   std::uint32_t seed = 1;      // the image's seed (random.h)
   Optimizations optimizations;
-  // Stratified samples instead of the card's independent ones: samples must then be a
-  // square, n x n. Sample i's point in the pixel is in cell (i mod n, i div n) of an
-  // n x n grid over the pixel, at a random place in it; its point on the lens and its
-  // point on the light (for the first thing it hits) likewise, each through the cells
-  // shuffled anew for every pixel, so that the three do not go together. Every cell
-  // gets one sample, where independent samples leave some cells empty and crowd
-  // others: the same mean, less noise for as many samples.
+  // Low-discrepancy samples instead of the card's independent ones: sample i's point in
+  // the pixel, on the lens and on the light (for the first thing it hits) are the i-th
+  // point of a Sobol sequence scrambled for the pixel, which spreads the samples
+  // evenly where independent ones leave gaps and clusters: the same mean, less noise
+  // for as many samples.
   bool stratified = false;
 };
 

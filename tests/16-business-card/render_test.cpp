@@ -125,7 +125,7 @@ TEST_CASE("the stratified card: the card's mean, and no more noise than its 64 s
   const Statistics ours = Measure(RenderCard(128, 128, stratified), reference);
   const Statistics cards = Measure(RenderCard(128, 128, card), reference);
   INFO("rms against the reference: stratified " << ours.rms_against << ", card "
-                                                 << cards.rms_against);
+                                                << cards.rms_against);
   CHECK(ours.rms_against <= cards.rms_against);
   for (int c = 0; c < 3; ++c) {
     CHECK(std::abs(ours.mean[c] - cards.mean[c]) <= 1);
