@@ -6,8 +6,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -43,12 +41,11 @@ SampleNumbers CardNumbers(Random& random) {
 // bits drawn for the pixel. Dimensions 1-2 place the sample in the pixel, 3-4 on the
 // lens, 5-6 on the light: the points of any power of two fill every such pair's cells
 // evenly, and the scrambling keeps neighbouring pixels from repeating one pattern.
-class Strata {
+class SobolPoints {
  public:
-  Strata(int samples, Random& random) {
+  SobolPoints(int samples, Random& random) {
     if (samples <= 0) {
-      throw cgfs::Error("low-discrepancy samples must be a power of two, not " +
-                        std::to_string(samples));
+      throw cgfs::Error("samples per pixel must be at least 1, not " + std::to_string(samples));
     }
     for (std::uint32_t& bits : scramble_) {
       bits = static_cast<std::uint32_t>(random.Rand() * 65536.0) << 16 |
@@ -56,7 +53,7 @@ class Strata {
     }
   }
 
-  SampleNumbers Numbers(int sample, Random&) const {
+  SampleNumbers Numbers(int sample) const {
     double u[6];
     for (int d = 0; d < 6; ++d) {
       std::uint32_t x = scramble_[d];
@@ -121,15 +118,15 @@ class Strata {
 
 glm::ivec3 RenderPixel(const Camera& camera, int x, int y, const RenderSettings& settings) {
   Random random(settings.seed, x, y);
-  const std::optional<Strata> strata =
-      settings.stratified ? std::optional<Strata>(std::in_place, settings.samples, random)
+  const std::optional<SobolPoints> points =
+      settings.stratified ? std::optional<SobolPoints>(std::in_place, settings.samples, random)
                           : std::nullopt;
   // The card adds 64 samples of 3.5 each: 3.5 = 224 / 64. For other counts, the same
   // 224 / samples keeps 13 + 224·mean.
   const double weight = 224.0 / settings.samples;
   glm::dvec3 p(13, 13, 13);
   for (int sample = 0; sample < settings.samples; ++sample) {
-    const SampleNumbers u = strata ? strata->Numbers(sample, random) : CardNumbers(random);
+    const SampleNumbers u = points ? points->Numbers(sample) : CardNumbers(random);
     const glm::dvec3 t = camera.a * (u.lens_a - 0.5) * camera.aperture +
                          camera.b * (u.lens_b - 0.5) * camera.aperture;
     const glm::dvec3 pixel_ray = camera.a * (u.pixel_x + x) + camera.b * (y + u.pixel_y) + camera.c;
