@@ -216,11 +216,20 @@ Scene SceneGlassSphere() {
 Scene SceneMagnifyingGlass() {
   Scene scene;
   scene.background_color = {200, 220, 255};
-  // A wall of small spheres at z = 7.5, in a checker of colours.
-  for (int i = -12; i <= 12; ++i) {
-    for (int j = -12; j <= 12; ++j) {
-      const Color color = (i + j) % 2 == 0 ? cgfs::kRed : Color{255, 255, 255};
-      scene.Add(Sphere{{0.2 * i, 0.2 * j, 7.5}, 0.08, color, 100});
+  // A wall of letters F at z = 7.5, each of small spheres 0.1 apart: a shape that shows
+  // at once whether an image is upright or upside down, mirrored or not.
+  constexpr const char* kLetterF[5] = {"###", "#..", "##.", "#..", "#.."};  // top row first
+  for (int column = -5; column <= 5; ++column) {
+    for (int row = -3; row <= 3; ++row) {
+      const double left = 0.45 * column - 0.1;
+      const double top = 0.7 * row + 0.2;
+      for (int j = 0; j < 5; ++j) {
+        for (int i = 0; i < 3; ++i) {
+          if (kLetterF[j][i] == '#') {
+            scene.Add(Sphere{{left + 0.1 * i, top - 0.1 * j, 7.5}, 0.04, cgfs::kRed, 100});
+          }
+        }
+      }
     }
   }
   // The lens 1.5 in front of the wall, inside its focal length of 2
@@ -274,7 +283,7 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
        [optimizations](Canvas& canvas) {
          RenderScene(SceneGlassSphere(), 5, canvas, optimizations);
        }},
-      {"refraction-magnifying-glass", "a glass lens magnifying a wall of small spheres",
+      {"refraction-magnifying-glass", "a glass lens magnifying a wall of letters F, upright",
        [optimizations](Canvas& canvas) {
          RenderScene(SceneMagnifyingGlass(), 5, canvas, optimizations);
        }},

@@ -1,6 +1,9 @@
 // The chapter's figures as whole images, and a few pixels that say what they show.
 #include <catch2/catch.hpp>
 
+#include <utility>
+#include <vector>
+
 #include "golden.h"
 #include "printing.h"
 #include "scenes.h"
@@ -98,22 +101,55 @@ TEST_CASE("pinned pixels: the Death Star's crater has the small sphere's colour"
   CHECK(canvas.GetPixel(0, 250) == Rgb8{0, 0, 0});
 }
 
-TEST_CASE("pinned pixels: the magnifying glass shows fewer, larger spheres", "[figures]") {
-  // Through the lens the wall's spheres are about four times as large: along a row
-  // through the middle, red spheres begin and end far less often inside the lens
-  // than outside it.
+TEST_CASE("pinned pixels: the magnifying glass shows the F behind it upright and larger",
+          "[figures]") {
+  // The wall's letters F are of spheres 0.1 apart at z = 7.5: 8 pixels apart on the
+  // canvas. Through the lens, inside its focal length, the F at the middle is upright
+  // (its top bar above, its upright stroke on the left) and about twice as large.
   const Canvas canvas = RenderFigureNamed(Figures({}), "refraction-magnifying-glass");
-  auto red = [&](int x) {
-    const Rgb8 pixel = canvas.GetPixel(x, 0);
+  auto red = [&](int x, int y) {
+    const Rgb8 pixel = canvas.GetPixel(x, y);
     return pixel.r > pixel.g + 80;
   };
-  auto changes = [&](int x_begin, int x_end) {
-    int count = 0;
+  // The red runs along the row y = 0, through the F's middle bar ("##."), as
+  // (first, last) pixels.
+  auto runs = [&](int x_begin, int x_end) {
+    std::vector<std::pair<int, int>> found;
     for (int x = x_begin; x < x_end; ++x) {
-      count += red(x) != red(x + 1);
+      if (red(x, 0) && (found.empty() || found.back().second != x - 1)) {
+        found.push_back({x, x});
+      } else if (red(x, 0)) {
+        found.back().second = x;
+      }
     }
-    return count;
+    return found;
   };
-  INFO("inside the lens " << changes(-60, 60) << ", outside " << changes(-190, -70));
-  CHECK(changes(-60, 60) * 2 < changes(-190, -70));
+  const auto inside = runs(-45, 45);
+  REQUIRE(inside.size() == 2);  // the middle bar's two spheres
+  for (const auto& [first, last] : runs(-200, -90)) {
+    INFO("a sphere outside the lens from x = " << first << " to " << last);
+    CHECK(last - first + 1 <= 8);
+  }
+  for (const auto& [first, last] : inside) {
+    INFO("a sphere through the lens from x = " << first << " to " << last);
+    CHECK(last - first + 1 >= 12);
+  }
+  const double spacing =
+      (inside[1].first + inside[1].second - inside[0].first - inside[0].second) / 2.0;
+  CHECK(spacing / 8 == Approx(2.2).margin(0.15));
+  // Upright and not mirrored: more of the F's red above the middle and left of it.
+  double x_sum = 0, y_sum = 0;
+  int count = 0;
+  for (int x = -45; x < 45; ++x) {
+    for (int y = -45; y < 45; ++y) {
+      if (red(x, y)) {
+        x_sum += x;
+        y_sum += y;
+        ++count;
+      }
+    }
+  }
+  REQUIRE(count > 500);
+  CHECK(x_sum / count < -4);
+  CHECK(y_sum / count > 4);
 }
