@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "parallel.h"
-#include "sampling.h"
 
 // Listing 2-3, "Canvas to Viewport": scale pixel units to viewport units; the viewport
 // lies at z = d.
@@ -224,10 +223,6 @@ void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas,
                  const Optimizations& optimizations) {
   Scene prepared = scene;
   PrepareScene(prepared, optimizations);
-  if (optimizations.subsampling) {
-    DrawSubsampled(prepared, recursion_depth, canvas);
-    return;
-  }
   ForEachTile(canvas.Width(), canvas.Height(), optimizations.threads, [&](const Tile& tile) {
     for (int x = tile.x_begin; x < tile.x_end; ++x) {
       for (int y = tile.y_begin; y < tile.y_end; ++y) {

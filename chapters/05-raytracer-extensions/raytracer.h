@@ -118,7 +118,8 @@ Color ColorAtHit(const Vec3& O, const Vec3& D, const Hit& hit, int recursion_dep
 Vec3 CameraRayDirection(double x, double y, const Canvas& canvas, const Scene& scene);
 
 // The main loop (Listing 5-1): one ray per canvas pixel, from the camera, drawn with
-// the optimisations chosen (see optimizations.h).
+// the exact optimisations chosen (see optimizations.h; subsampling, which is not
+// exact, is a main loop of its own, sampling.h).
 void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas,
                  const Optimizations& optimizations);
 

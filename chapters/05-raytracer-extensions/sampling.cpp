@@ -61,8 +61,11 @@ Color SupersampledColor(int x, int y, int n, int recursion_depth, const Scene& s
 
 }  // namespace
 
-void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas) {
-  const int threads = scene.optimizations.threads;
+void RenderSceneSubsampled(const Scene& unprepared, int recursion_depth, Canvas& canvas,
+                           const Optimizations& optimizations) {
+  Scene scene = unprepared;
+  PrepareScene(scene, optimizations);
+  const int threads = optimizations.threads;
   PixelGrid<int> hit_object(canvas, -2);  // -2: not traced
   // Odd and even counted from the canvas's left and bottom edges.
   auto odd_x = [&](int x) { return (x + canvas.Width() / 2) % 2 != 0; };
@@ -173,4 +176,13 @@ long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas
     }
   });
   return subdivided;
+}
+
+void RenderSceneAsChosen(const Scene& scene, int recursion_depth, Canvas& canvas,
+                         const Optimizations& optimizations) {
+  if (optimizations.subsampling) {
+    RenderSceneSubsampled(scene, recursion_depth, canvas, optimizations);
+  } else {
+    RenderScene(scene, recursion_depth, canvas, optimizations);
+  }
 }

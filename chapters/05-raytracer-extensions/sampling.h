@@ -3,13 +3,19 @@
 
 #include "raytracer.h"
 
-// "Subsampling": traces the pixels with even coordinates, then, for each pixel in
-// between, when the traced pixels on both sides (all four around, for a pixel in
-// the middle of a square) hit the same object, only that object is intersected, and
-// when they all saw the background, so does the pixel. Everywhere else the pixel is
-// traced. Approximate: an object thinner than two pixels can vanish. The scene must
-// be prepared (PrepareScene).
-void DrawSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas);
+// "Subsampling", a main loop of its own beside RenderScene: traces the pixels with
+// even coordinates, then, for each pixel in between, when the traced pixels on both
+// sides (all four around, for a pixel in the middle of a square) hit the same object,
+// only that object is intersected, and when they all saw the background, so does the
+// pixel. Everywhere else the pixel is traced. Approximate: an object thinner than two
+// pixels can vanish. With the other optimisations chosen.
+void RenderSceneSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas,
+                           const Optimizations& optimizations);
+
+// The main loop the optimisations choose: RenderSceneSubsampled when they ask for
+// subsampling, else RenderScene (what --optimizations does to every figure).
+void RenderSceneAsChosen(const Scene& scene, int recursion_depth, Canvas& canvas,
+                         const Optimizations& optimizations);
 
 // "Supersampling": n x n rays per pixel on a regular grid centred on the pixel's own
 // ray, each colour clamped to 0..255 and then averaged, drawn with the chosen

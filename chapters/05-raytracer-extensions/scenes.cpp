@@ -243,59 +243,61 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   const Optimizations optimizations = settings.optimizations;
   std::vector<cgfs::Figure> figures = {
       {"fig-5-1-camera", "the reflective scene from (3, 0, 1), turned 45 degrees (Figure 5-1)",
-       [optimizations](Canvas& canvas) { RenderScene(SceneCamera(), 3, canvas, optimizations); }},
+       [optimizations](Canvas& canvas) {
+         RenderSceneAsChosen(SceneCamera(), 3, canvas, optimizations);
+       }},
   };
   for (const int count : {100, 1000, 10000, 100000}) {
     figures.push_back({"sphere-field-" + std::to_string(count),
                        std::to_string(count) + " small spheres, placed from a fixed seed",
                        [count, optimizations](Canvas& canvas) {
-                         RenderScene(SceneSphereField(count), 3, canvas, optimizations);
+                         RenderSceneAsChosen(SceneSphereField(count), 3, canvas, optimizations);
                        }});
   }
   const std::vector<cgfs::Figure> more = {
       {"triangles", "a mirror pyramid of four triangles behind the spheres",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneTriangles(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneTriangles(), 3, canvas, optimizations);
        }},
       {"torus-mesh", "a torus of 102 400 triangles, through the same hierarchy",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneTorusMesh(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneTorusMesh(), 3, canvas, optimizations);
        }},
       {"csg-operations", "union, intersection and difference of a red and a blue sphere",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneCsgOperations(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneCsgOperations(), 3, canvas, optimizations);
        }},
       {"csg-lens", "the book's lens: the intersection of two spheres",
-       [optimizations](Canvas& canvas) { RenderScene(SceneCsgLens(), 3, canvas, optimizations); }},
+       [optimizations](Canvas& canvas) {
+         RenderSceneAsChosen(SceneCsgLens(), 3, canvas, optimizations);
+       }},
       {"csg-death-star", "the book's Death Star: a sphere minus a smaller sphere",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneCsgDeathStar(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneCsgDeathStar(), 3, canvas, optimizations);
        }},
       {"csg-nested", "a nested solid, ((A or B) minus C) and D",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneCsgNested(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneCsgNested(), 3, canvas, optimizations);
        }},
       {"transparency", "the red sphere 60% see-through, without bending the light",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneTransparency(), 3, canvas, optimizations);
+         RenderSceneAsChosen(SceneTransparency(), 3, canvas, optimizations);
        }},
       {"refraction-glass-sphere", "a glass sphere (index 1.5) in front of the spheres",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneGlassSphere(), 5, canvas, optimizations);
+         RenderSceneAsChosen(SceneGlassSphere(), 5, canvas, optimizations);
        }},
       {"refraction-magnifying-glass", "a glass lens magnifying a wall of letters F, upright",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneMagnifyingGlass(), 5, canvas, optimizations);
+         RenderSceneAsChosen(SceneMagnifyingGlass(), 5, canvas, optimizations);
        }},
       {"thin-wires", "wires from half a pixel to five pixels wide, one ray per pixel",
        [optimizations](Canvas& canvas) {
-         RenderScene(SceneThinWires(), 0, canvas, optimizations);
+         RenderSceneAsChosen(SceneThinWires(), 0, canvas, optimizations);
        }},
       {"subsampling-thin-wires", "the same subsampled: the wires under two pixels wide break up",
        [optimizations](Canvas& canvas) {
-         Optimizations subsampled = optimizations;
-         subsampled.subsampling = true;
-         RenderScene(SceneThinWires(), 0, canvas, subsampled);
+         RenderSceneSubsampled(SceneThinWires(), 0, canvas, optimizations);
        }},
   };
   figures.insert(figures.end(), more.begin(), more.end());

@@ -102,8 +102,7 @@ TEST_CASE("Bvh: the surface area heuristic keeps a sphere field's tree cheap", "
   CHECK(bvh.NodeCount() < 2 * 1001);
 }
 
-TEST_CASE("Bvh: a node entered just before the best hit so far is still visited",
-          "[equations]") {
+TEST_CASE("Bvh: a node entered just before the best hit so far is still visited", "[equations]") {
   // A big sphere, larger than all the others together, gets a leaf of its own beside
   // the tree of the rest. The ray down the z axis enters its box first (z = 15) and
   // hits it at z = 16; the small sphere on the axis, in the other subtree, is hit at

@@ -10,17 +10,15 @@ using cgfs::Rgb8;
 using cgfs::test::IsSameImageAs;
 using cgfs::test::RenderFigureNamed;
 
-TEST_CASE("DrawSubsampled: Figure 5-1 within the stated tolerance of the full render",
+TEST_CASE("RenderSceneSubsampled: Figure 5-1 within the stated tolerance of the full render",
           "[sampling]") {
   // The tolerance the chapter's README states: at most 1% of the pixels differ, and
   // the traced pixels (even x and y) are exact. (Here none differ at all: Figure 5-1
   // has nothing thinner than two pixels; the wires below show what can go wrong.)
   Canvas full(600, 600);
   RenderScene(SceneCamera(), 3, full, AllOptimizations());
-  Optimizations subsampled = AllOptimizations();
-  subsampled.subsampling = true;
   Canvas approximate(600, 600);
-  RenderScene(SceneCamera(), 3, approximate, subsampled);
+  RenderSceneSubsampled(SceneCamera(), 3, approximate, AllOptimizations());
   long differing = 0;
   for (int x = -300; x < 300; ++x) {
     for (int y = -300; y < 300; ++y) {
@@ -34,7 +32,7 @@ TEST_CASE("DrawSubsampled: Figure 5-1 within the stated tolerance of the full re
   CHECK(differing <= 600 * 600 / 100);
 }
 
-TEST_CASE("DrawSubsampled loses the wires under two pixels wide", "[sampling]") {
+TEST_CASE("RenderSceneSubsampled loses the wires under two pixels wide", "[sampling]") {
   const Canvas full = RenderFigureNamed(Figures({}), "thin-wires");
   const Canvas approximate = RenderFigureNamed(Figures({}), "subsampling-thin-wires");
   // Along one row, count the black pixels of each wire: the thinnest ones lose

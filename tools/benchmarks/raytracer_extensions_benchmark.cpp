@@ -17,6 +17,7 @@
 
 #include "benchmark_main.h"
 #include "raytracer.h"
+#include "sampling.h"
 #include "scenes.h"
 
 #if CGFS_HAVE_EMBREE
@@ -58,7 +59,7 @@ void Render(benchmark::State& state, const Scene& scene, int side,
             const Optimizations& optimizations) {
   Canvas canvas(side, side);
   for (auto _ : state) {
-    RenderScene(scene, 3, canvas, optimizations);
+    RenderSceneAsChosen(scene, 3, canvas, optimizations);
     benchmark::DoNotOptimize(canvas);
   }
   state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(side) * side,
