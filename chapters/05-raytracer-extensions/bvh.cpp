@@ -83,10 +83,12 @@ int Bvh::Pack(int node) {
 // for each leaf reached; stops when visit returns true. `best` is read at every step:
 // Closest narrows it as it finds hits. The tree's depth, and so the stack, stays
 // under 64 (Build) for any scene that fits in memory.
-template <typename Visit>
-void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit) const {
+template <typename Visit, typename Count>
+void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit,
+               Count& count) const {
   const SlabRay slab = MakeSlabRay(ray);
   double t_root = 0;
+  count.Boxes(1);
   if (!RayHitsBox(nodes_[0].box, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
     return;
   }
@@ -102,6 +104,7 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
     // Down the nearer child, the farther one left on the stack, until a leaf.
     while (entry.child >= 0 && entry.t_enter <= best) {
       const PackedNode& node = packed_[entry.child];
+      count.Boxes(2);
       double enter[2];
       bool hits[2];
       RayHitsChildren(node.bounds, slab, t_min, std::min(t_max, best), enter, hits);
@@ -124,12 +127,30 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
 }
 
 Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
+  NoCount none;
+  return FindClosest(ray, t_min, t_max, object, none);
+}
+
+Bvh::Tests Bvh::CountClosest(const Ray& ray, double t_min, double t_max) const {
+  struct Counter {
+    Tests tests;
+    void Boxes(int n) { tests.boxes += n; }
+    void Object() { ++tests.objects; }
+  } counter;
+  int object = -1;
+  FindClosest(ray, t_min, t_max, object, counter);
+  return counter.tests;
+}
+
+template <typename Count>
+Hit Bvh::FindClosest(const Ray& ray, double t_min, double t_max, int& object, Count& count) const {
   Hit best;
   object = -1;
   if (order_.empty()) {
     return best;
   }
   const auto test = [&](int slot) {
+    count.Object();
     const int candidate = order_[slot];
     const Hit hit = IntersectSlot(slot, ray, t_min, t_max);
     // On a tie the lower index wins, as in the plain loop, which keeps the first.
@@ -140,6 +161,7 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
   };
   if (root_ < 0) {  // all in one leaf: the plain loop, in scene order, without a box test
     for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
+      count.Object();
       const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
       if (hit.t < best.t) {
         best = hit;
@@ -148,12 +170,15 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
     }
     return best;
   }
-  Walk(ray, t_min, t_max, best.t, [&](const Leaf& leaf) {
-    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-      test(slot);
-    }
-    return false;
-  });
+  Walk(
+      ray, t_min, t_max, best.t,
+      [&](const Leaf& leaf) {
+        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+          test(slot);
+        }
+        return false;
+      },
+      count);
   return best;
 }
 
@@ -171,14 +196,18 @@ bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   if (order_.empty()) {
     return false;
   }
-  Walk(ray, t_min, t_max, t_max, [&](const Leaf& leaf) {
-    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-      if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
-        object = order_[slot];
-        return true;
-      }
-    }
-    return false;
-  });
+  NoCount none;
+  Walk(
+      ray, t_min, t_max, t_max,
+      [&](const Leaf& leaf) {
+        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+          if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
+            object = order_[slot];
+            return true;
+          }
+        }
+        return false;
+      },
+      none);
   return object >= 0;
 }

@@ -26,6 +26,14 @@ class Bvh {
   // Whether anything is hit in [t_min, t_max]; stops at the first hit found.
   bool Any(const Ray& ray, double t_min, double t_max, int& object) const;
 
+  // The work of Closest for one ray, counted: box tests (the root's, and two per
+  // inner node visited) and object tests. Tests and the chapter's README use it.
+  struct Tests {
+    long boxes = 0;
+    long objects = 0;
+  };
+  Tests CountClosest(const Ray& ray, double t_min, double t_max) const;
+
   int NodeCount() const { return static_cast<int>(nodes_.size()); }
   int Depth() const { return depth_; }
   // The tree's expected cost for a ray that enters the root, by the surface area
@@ -83,8 +91,16 @@ class Bvh {
     int count = 0;
   };
   int Pack(int node);
-  template <typename Visit>
-  void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
+  // Counts nothing: what Closest and Any walk with, at no cost.
+  struct NoCount {
+    void Boxes(int) {}
+    void Object() {}
+  };
+  template <typename Count>
+  Hit FindClosest(const Ray& ray, double t_min, double t_max, int& object, Count& count) const;
+  template <typename Visit, typename Count>
+  void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit,
+            Count& count) const;
 
   // The hit of the object in leaf slot `slot`, order_[slot]. Spheres, the usual leaves,
   // are tested without a virtual call.
