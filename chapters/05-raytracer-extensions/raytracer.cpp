@@ -85,15 +85,17 @@ bool IsInShadow(const Vec3& P, const Vec3& L, double t_max, int light_index, con
     }
   }
   int object = -1;
+  bool blocked = false;
   if (optimizations.shadow_any_hit) {
-    AnyIntersection(P, L, scene.epsilon, t_max, scene, object);
+    blocked = AnyIntersection(P, L, scene.epsilon, t_max, scene, object);
   } else {
     object = ClosestIntersection(P, L, scene.epsilon, t_max, scene).object;
+    blocked = object >= 0;
   }
-  if (optimizations.shadow_coherence && object >= 0) {
+  if (optimizations.shadow_coherence && blocked) {
     last_blocker[light_index] = object;
   }
-  return object >= 0;
+  return blocked;
 }
 
 // "Rendering with Reflections". N must have unit length; R may have any length,
