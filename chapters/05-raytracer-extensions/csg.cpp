@@ -1,6 +1,8 @@
 #include "csg.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <memory>
 
 namespace {
 
@@ -25,12 +27,16 @@ struct Event {
 
 }  // namespace
 
+namespace {
+
 // Walks along the ray through every boundary of both operands in order of t,
 // keeping track of whether the ray is inside A and inside B; the result's spans
-// begin and end where the combination changes.
-std::vector<Span> CombineSpans(CsgOperation operation, const std::vector<Span>& a,
-                               const std::vector<Span>& b) {
-  std::vector<Event> events;
+// begin and end where the combination changes. Appends them to `out`; `events` is
+// scratch space, kept by the caller so that a ray allocates nothing.
+void CombineSpansInto(CsgOperation operation, const std::vector<Span>& a,
+                      const std::vector<Span>& b, std::vector<Event>& events,
+                      std::vector<Span>& out) {
+  events.clear();
   for (const Span& span : a) {
     events.push_back({span.in, true, true});
     events.push_back({span.out, true, false});
@@ -42,7 +48,7 @@ std::vector<Span> CombineSpans(CsgOperation operation, const std::vector<Span>& 
   std::stable_sort(events.begin(), events.end(),
                    [](const Event& x, const Event& y) { return x.hit.t < y.hit.t; });
 
-  std::vector<Span> result;
+  const std::size_t first = out.size();
   bool in_a = false;
   bool in_b = false;
   bool inside = false;
@@ -57,36 +63,79 @@ std::vector<Span> CombineSpans(CsgOperation operation, const std::vector<Span>& 
     if (operation == CsgOperation::kDifference && !event.from_a) {
       boundary.flip_normal = !boundary.flip_normal;
     }
+    inside = now_inside;
     if (now_inside) {
       current.in = boundary;
-    } else {
-      current.out = boundary;
-      result.push_back(current);
+      continue;
     }
-    inside = now_inside;
-  }
-  // Where operands touch, the walk can end a span and start the next at the same t
-  // (the union of [4, 6] and [6, 8]), or make a span of no length (their
-  // intersection). Neither has a surface a ray could meet: join the first, drop the second.
-  std::vector<Span> joined;
-  for (const Span& span : result) {
-    if (!joined.empty() && joined.back().out.t == span.in.t) {
-      joined.back().out = span.out;
+    current.out = boundary;
+    // Where operands touch, the walk can end a span and start the next at the same t
+    // (the union of [4, 6] and [6, 8]), or make a span of no length (their
+    // intersection). Neither has a surface a ray could meet: join the first, drop the
+    // second (once joining is done: a joined span may have length).
+    if (out.size() > first && out.back().out.t == current.in.t) {
+      out.back().out = current.out;
     } else {
-      joined.push_back(span);
+      out.push_back(current);
     }
   }
-  std::erase_if(joined, [](const Span& span) { return span.in.t == span.out.t; });
-  return joined;
+  out.erase(std::remove_if(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                           [](const Span& span) { return span.in.t == span.out.t; }),
+            out.end());
 }
 
+}  // namespace
+
+std::vector<Span> CombineSpans(CsgOperation operation, const std::vector<Span>& a,
+                               const std::vector<Span>& b) {
+  std::vector<Event> events;
+  std::vector<Span> combined;
+  CombineSpansInto(operation, a, b, events, combined);
+  return combined;
+}
+
+namespace {
+
+// Each thread's scratch space for CSG, one set per level of nesting of the solid
+// being tested, kept from ray to ray: once its vectors have grown, a ray's CSG tests
+// allocate nothing.
+struct CsgScratch {
+  std::vector<Span> a;
+  std::vector<Span> b;
+  std::vector<Event> events;
+};
+
+thread_local std::vector<std::unique_ptr<CsgScratch>> scratch_sets;
+thread_local std::size_t nesting = 0;
+
+// The scratch set of the next level, released when it goes out of scope.
+class ScratchLevel {
+ public:
+  ScratchLevel() {
+    if (scratch_sets.size() <= nesting) {
+      scratch_sets.push_back(std::make_unique<CsgScratch>());
+    }
+    set_ = scratch_sets[nesting++].get();
+    set_->a.clear();
+    set_->b.clear();
+  }
+  ~ScratchLevel() { --nesting; }
+  ScratchLevel(const ScratchLevel&) = delete;
+  ScratchLevel& operator=(const ScratchLevel&) = delete;
+  CsgScratch& operator*() const { return *set_; }
+
+ private:
+  CsgScratch* set_;
+};
+
+}  // namespace
+
 void CsgSolid::Spans(const Ray& ray, std::vector<Span>& spans) const {
-  std::vector<Span> spans_a;
-  std::vector<Span> spans_b;
-  a->Spans(ray, spans_a);
-  b->Spans(ray, spans_b);
-  const std::vector<Span> combined = CombineSpans(operation, spans_a, spans_b);
-  spans.insert(spans.end(), combined.begin(), combined.end());
+  const ScratchLevel level;
+  CsgScratch& scratch = *level;
+  a->Spans(ray, scratch.a);
+  b->Spans(ray, scratch.b);
+  CombineSpansInto(operation, scratch.a, scratch.b, scratch.events, spans);
 }
 
 Vec3 CsgSolid::Normal(const Vec3& P) const {

@@ -20,7 +20,10 @@ Box Padded(const Box& box) {
 }
 
 Hit Solid::Intersect(const Ray& ray, double t_min, double t_max) const {
-  std::vector<Span> spans;
+  // Kept by each thread from ray to ray, so that a test allocates nothing. Spans never
+  // calls Intersect, so one vector a thread is enough.
+  thread_local std::vector<Span> spans;
+  spans.clear();
   Spans(ray, spans);
   for (const Span& span : spans) {
     for (const Hit& boundary : {span.in, span.out}) {
