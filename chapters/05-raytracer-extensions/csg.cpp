@@ -154,7 +154,12 @@ Box CsgSolid::Bounds() const {
   return a->Bounds();
 }
 
-void CsgSolid::Prepare(const Vec3& camera_position) {
-  a->Prepare(camera_position);
-  b->Prepare(camera_position);
+std::shared_ptr<Object> CsgSolid::Prepared(const Vec3& camera_position) const {
+  auto prepared = std::make_shared<CsgSolid>(*this);
+  for (std::shared_ptr<Solid>* part : {&prepared->a, &prepared->b}) {
+    if (std::shared_ptr<Object> copy = (*part)->Prepared(camera_position)) {
+      *part = std::static_pointer_cast<Solid>(copy);  // a solid's copy is a solid
+    }
+  }
+  return prepared;
 }

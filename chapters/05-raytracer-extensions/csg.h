@@ -21,7 +21,7 @@ class CsgSolid final : public Solid {
   void Spans(const Ray& ray, std::vector<Span>& spans) const override;
   Vec3 Normal(const Vec3& P) const override;  // never asked: hits name the part they are on
   Box Bounds() const override;
-  void Prepare(const Vec3& camera_position) override;
+  std::shared_ptr<Object> Prepared(const Vec3& camera_position) const override;
 
   CsgOperation operation;
   std::shared_ptr<Solid> a;

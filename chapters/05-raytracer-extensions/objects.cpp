@@ -110,10 +110,12 @@ Box Sphere::Bounds() const {
   return Padded({center - Vec3(radius), center + Vec3(radius)});
 }
 
-void Sphere::Prepare(const Vec3& camera_position) {
-  radius_squared = radius * radius;
+std::shared_ptr<Object> Sphere::Prepared(const Vec3& camera_position) const {
+  auto prepared = std::make_shared<Sphere>(*this);
+  prepared->radius_squared = radius * radius;
   const Vec3 CO = camera_position - center;
-  camera_CO_dot_CO = glm::dot(CO, CO);
+  prepared->camera_CO_dot_CO = glm::dot(CO, CO);
+  return prepared;
 }
 
 Triangle::Triangle(Vec3 a, Vec3 b, Vec3 c, Color color, double specular, double reflective)

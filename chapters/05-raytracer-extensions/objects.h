@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -71,8 +72,13 @@ class Object {
   virtual Vec3 Normal(const Vec3& P) const = 0;
   // A box the object lies in.
   virtual Box Bounds() const = 0;
-  // Caches what does not change while the scene is drawn ("Caching Invariants").
-  virtual void Prepare(const Vec3& /*camera_position*/) {}
+  // A copy with what does not change while the scene is drawn cached in it ("Caching
+  // Invariants"); nullptr when there is nothing to cache, and the object serves as it
+  // is. A copy, never the object itself: two scenes drawn at once from two cameras
+  // may share their objects.
+  virtual std::shared_ptr<Object> Prepared(const Vec3& /*camera_position*/) const {
+    return nullptr;
+  }
 
   // A CSG solid's parts keep their own surfaces; the solid's own is not used.
   Surface surface;
@@ -106,7 +112,7 @@ class Sphere final : public Solid {
   void Spans(const Ray& ray, std::vector<Span>& spans) const override;
   Vec3 Normal(const Vec3& P) const override;
   Box Bounds() const override;
-  void Prepare(const Vec3& camera_position) override;
+  std::shared_ptr<Object> Prepared(const Vec3& camera_position) const override;
 
   // Both roots of the ray's quadratic, with the cached values if the ray may use them.
   std::pair<double, double> Roots(const Ray& ray) const;

@@ -13,8 +13,10 @@ Vec3 CanvasToViewport(double x, double y, const Canvas& canvas, const Viewport& 
 
 void PrepareScene(Scene& scene, const Optimizations& optimizations) {
   scene.optimizations = optimizations;
-  for (const auto& object : scene.objects) {
-    object->Prepare(scene.camera.position);
+  for (std::shared_ptr<Object>& object : scene.objects) {
+    if (std::shared_ptr<Object> prepared = object->Prepared(scene.camera.position)) {
+      object = std::move(prepared);
+    }
   }
   scene.bvh = optimizations.bvh ? std::make_shared<const Bvh>(scene.objects) : nullptr;
 }

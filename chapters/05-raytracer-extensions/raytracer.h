@@ -66,6 +66,9 @@ struct Scene {
 
 // Caches what the optimisations need (each sphere's r² and <CO,CO> from the camera,
 // the hierarchy) and records which ones are on. Once per scene, before drawing it.
+// The objects that cache something are replaced by prepared copies: RenderScene
+// prepares a copy of the scene it is given, and leaves that scene's objects as they
+// were, so that two renders of one scene from two cameras can run at once.
 void PrepareScene(Scene& scene, const Optimizations& optimizations);
 
 // The ray O + tD as the intersection functions take it: with <D,D> computed once,

@@ -1,6 +1,10 @@
 // Listing 5-1: the camera.
 #include <catch2/catch.hpp>
 
+#include <thread>
+
+#include <glm/geometric.hpp>
+
 #include "cgfs/image_io.h"
 #include "checks.h"
 #include "golden.h"
@@ -46,4 +50,41 @@ TEST_CASE("RenderScene with the camera at the origin draws chapter 4's Figure 4-
   CHECK_THAT(
       canvas.GetImage(),
       IsSameImageAs(cgfs::ReadImage(GoldenFile("04-shadows-reflections", "fig-4-8-reflections"))));
+}
+
+TEST_CASE("PrepareScene caches in copies: the scene it was copied from is left as it was",
+          "[optimizations]") {
+  const Scene scene = SceneCamera();
+  Scene prepared = scene;
+  PrepareScene(prepared, AllOptimizations());
+  REQUIRE(prepared.objects.size() == scene.objects.size());
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const auto* original = dynamic_cast<const Sphere*>(scene.objects[i].get());
+    const auto* copy = dynamic_cast<const Sphere*>(prepared.objects[i].get());
+    REQUIRE(original != nullptr);
+    REQUIRE(copy != nullptr);
+    CHECK(copy != original);
+    CHECK(original->camera_CO_dot_CO == 0);  // never written
+    const Vec3 CO = prepared.camera.position - copy->center;
+    CHECK(copy->camera_CO_dot_CO == glm::dot(CO, CO));
+  }
+}
+
+TEST_CASE("two renders of one scene from two cameras at once draw what each draws alone",
+          "[optimizations]") {
+  // They share the scene's objects; each caches the <CO,CO> of its own camera.
+  const Scene from_here = SceneCamera();
+  Scene from_there = from_here;
+  from_there.camera = Camera{};  // the origin, looking down +z
+  Optimizations cached;
+  cached.cache = true;
+  Canvas here_alone(100, 100), there_alone(100, 100), here(100, 100), there(100, 100);
+  RenderScene(from_here, 3, here_alone, cached);
+  RenderScene(from_there, 3, there_alone, cached);
+  std::thread other([&] { RenderScene(from_there, 3, there, cached); });
+  RenderScene(from_here, 3, here, cached);
+  other.join();
+  CHECK_THAT(here.GetImage(), IsSameImageAs(here_alone.GetImage()));
+  CHECK_THAT(there.GetImage(), IsSameImageAs(there_alone.GetImage()));
+  CHECK_FALSE(here.GetImage() == there.GetImage());
 }

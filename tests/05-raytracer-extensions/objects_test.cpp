@@ -50,9 +50,10 @@ TEST_CASE("IntersectRaySphere with cached invariants finds the very same roots",
   Random random(7);
   const Vec3 camera{0.5, 1, -2};
   for (int i = 0; i < 2000; ++i) {
-    Sphere sphere({random.Between(-3, 3), random.Between(-3, 3), random.Between(2, 9)},
-                  random.Between(0.1, 2), cgfs::kRed);
-    sphere.Prepare(camera);
+    const Sphere plain({random.Between(-3, 3), random.Between(-3, 3), random.Between(2, 9)},
+                       random.Between(0.1, 2), cgfs::kRed);
+    const std::shared_ptr<Object> prepared = plain.Prepared(camera);
+    const Sphere& sphere = static_cast<const Sphere&>(*prepared);
     const bool from_camera = i % 2 == 0;
     const Vec3 O = from_camera ? camera : Vec3{random.Between(-1, 1), 0, random.Between(-1, 1)};
     const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(0.2, 2)};
@@ -139,8 +140,8 @@ TEST_CASE("Bvh: a primary ray through 10 000 spheres makes a few dozen tests, no
   for (int x = -300; x < 300; x += 10) {
     for (int y = -300; y < 300; y += 10) {
       const Vec3 D = CameraRayDirection(x, y, canvas, scene);
-      const Bvh::Tests tests = scene.bvh->CountClosest(MakeRay(scene.camera.position, D, scene), 1,
-                                                       cgfs::kInf);
+      const Bvh::Tests tests =
+          scene.bvh->CountClosest(MakeRay(scene.camera.position, D, scene), 1, cgfs::kInf);
       total.boxes += tests.boxes;
       total.objects += tests.objects;
       ++rays;
