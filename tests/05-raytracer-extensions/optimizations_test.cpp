@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "golden.h"
 #include "meshes.h"
@@ -78,6 +79,17 @@ TEST_CASE("every exact optimisation draws every figure byte for byte as none doe
 
 namespace {
 
+// The scene prepared twice: with no optimisation, and with the hierarchy alone.
+std::pair<Scene, Scene> WithoutAndWithBvh(const Scene& scene) {
+  Scene plain = scene;
+  PrepareScene(plain, {});
+  Optimizations bvh;
+  bvh.bvh = true;
+  Scene with_bvh = scene;
+  PrepareScene(with_bvh, bvh);
+  return {plain, with_bvh};
+}
+
 // Rays that graze an object: through a point at distance r(1 - u) of a sphere's centre,
 // u in [0, 1e-3), or on a triangle's edge or corner, from a random side. A hierarchy
 // whose boxes are a hair too small, or that prunes a node a hair too early, misses
@@ -113,13 +125,9 @@ GrazingRay Grazing(const Object& object, Random& random) {
 }  // namespace
 
 TEST_CASE("Bvh: grazing rays hit what the loop over every object hits", "[optimizations]") {
-  for (Scene scene : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
-    const int rays = scene.objects.size() > 10000 ? 200 : 20000;
-    Scene with_bvh = scene;
-    PrepareScene(scene, {});
-    Optimizations bvh;
-    bvh.bvh = true;
-    PrepareScene(with_bvh, bvh);
+  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
+    const int rays = each.objects.size() > 10000 ? 200 : 20000;
+    const auto [scene, with_bvh] = WithoutAndWithBvh(each);
     Random random(3);
     long hits = 0;
     for (int i = 0; i < rays; ++i) {
@@ -177,14 +185,10 @@ TEST_CASE("RenderScene with all optimisations draws on one worker per core", "[o
 TEST_CASE("Bvh finds what the loop over every object finds", "[optimizations]") {
   // Random rays through the sphere field and the torus, from the camera and from
   // points among the objects: the same object, the same t, the same yes or no.
-  for (Scene scene : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
+  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
     // The torus has 102 400 triangles for the loop to go through: fewer rays.
-    const int rays = scene.objects.size() > 10000 ? 300 : 3000;
-    Scene with_bvh = scene;
-    PrepareScene(scene, {});
-    Optimizations bvh;
-    bvh.bvh = true;
-    PrepareScene(with_bvh, bvh);
+    const int rays = each.objects.size() > 10000 ? 300 : 3000;
+    const auto [scene, with_bvh] = WithoutAndWithBvh(each);
     Random random(11);
     for (int i = 0; i < rays; ++i) {
       const Vec3 O =
