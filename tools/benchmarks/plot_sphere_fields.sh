@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Plots the SphereFieldSmall medians of Google Benchmark's JSON (scripts/benchmark):
-# render time against the number of spheres, with and without the hierarchy.
+# Plots the sphere fields from the medians of Google Benchmark's JSON (scripts/benchmark):
+# on the left, the render time at 150x150 against the number of spheres, with and
+# without the hierarchy (SphereFieldSmall); on the right, the primary rays traced a
+# second, ours and Embree's (SphereFieldPrimary: 600x600 = 360 000 rays, one thread).
 # Usage: plot_sphere_fields.sh BENCHMARK.json OUTPUT.png
 set -euo pipefail
 json=$1
@@ -16,9 +18,17 @@ awk -F'"' '
     value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
     time[part[2], part[3]] = value; counts[part[2]] = 1
   }
+  /"real_time":/ && name ~ /^SphereFieldPrimary\/[0-9]+\/(ours|embree)\/real_time_median$/ {
+    split(name, part, "/")
+    value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
+    time[part[2], part[3]] = value; counts[part[2]] = 1
+  }
   END {
+    # Columns: spheres, ms with and without the hierarchy, million rays/s ours and Embree.
     for (n in counts) print n, ((n, "bvh") in time ? time[n, "bvh"] : "NaN"),
-                             ((n, "no-bvh") in time ? time[n, "no-bvh"] : "NaN")
+                             ((n, "no-bvh") in time ? time[n, "no-bvh"] : "NaN"),
+                             ((n, "ours") in time ? 360 / time[n, "ours"] : "NaN"),
+                             ((n, "embree") in time ? 360 / time[n, "embree"] : "NaN")
   }' "$json" | sort -n > "$data"
 
 if [ ! -s "$data" ]; then
@@ -27,15 +37,25 @@ if [ ! -s "$data" ]; then
 fi
 
 gnuplot <<GNUPLOT
-set terminal pngcairo size 720,480 font "sans,11"
+set terminal pngcairo size 1100,460 font "sans,11"
 set output "$output"
-set title "Chapter 5: the sphere fields at 150x150, one thread"
+set multiplot layout 1,2
+set rmargin 5
 set xlabel "spheres"
-set ylabel "render time (ms)"
-set logscale xy
-set key top left
+set logscale x
 set grid
-set rmargin 6
+set key top left
+set title "Chapter 5: the sphere fields at 150x150, one thread"
+set ylabel "render time (ms)"
+set logscale y
 plot "$data" using 1:3 with linespoints lw 2 pt 7 title "without the hierarchy", \
      "$data" using 1:2 with linespoints lw 2 pt 5 title "with the hierarchy"
+set title "Primary rays, one thread: ours and Embree 3"
+set ylabel "million rays a second"
+unset logscale y
+set yrange [0:*]
+set key top right
+plot "$data" using 1:5 with linespoints lw 2 pt 9 title "Embree", \
+     "$data" using 1:4 with linespoints lw 2 pt 5 title "ours (the hierarchy)"
+unset multiplot
 GNUPLOT
