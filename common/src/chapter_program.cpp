@@ -16,6 +16,7 @@
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
 #include "cgfs/progress.h"
+#include "cgfs/window.h"
 
 namespace cgfs {
 
@@ -117,6 +118,9 @@ ChapterProgram::ChapterProgram(std::string chapter, std::string description)
       ->type_name("FORMAT")
       ->check(CLI::IsMember({"png", "ppm"}));
   app.add_flag("--list", list_, "list the figures and exit")->disable_flag_override();
+  app.add_flag("--window", window_,
+               "show the figures in a window instead of writing them (Left/Right, S saves)")
+      ->disable_flag_override();
 }
 
 ChapterProgram::~ChapterProgram() = default;
@@ -146,6 +150,10 @@ int ChapterProgram::DrawFigures(const std::vector<Figure>& figures) const {
     return 0;
   }
 
+  if (window_) {
+    ShowFigures(chapter_, selected, size.width, size.height, output_, format_);
+    return 0;
+  }
   CreateOutputFolder(output_);
   for (const Figure* figure : selected) {
     const auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,6 @@
 // The program every chapter builds from its main.cpp: it draws the chapter's
 // figures into out/<chapter>/, with the options every chapter shares (--output,
-// --size, --figure, --format, --list, --help).
+// --size, --figure, --format, --list, --window, --help).
 #pragma once
 
 #include <functional>
@@ -43,6 +43,7 @@ class ChapterProgram {
   std::string format_ = "png";
   std::vector<std::string> selected_;
   bool list_ = false;
+  bool window_ = false;
 };
 
 }  // namespace cgfs

@@ -1,0 +1,26 @@
+// --window: the chapter's figures in a window (SDL2), one at a time, each drawn by the
+// chapter's own code when it is shown, as the book's interactive demos show theirs.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cgfs/figure.h"
+
+namespace cgfs {
+
+// What the window does with the keys, as H or F1 prints it.
+inline constexpr char kWindowKeys[] =
+    "keys: Left / Right the previous / next figure, S save it, R draw it again, "
+    "H or F1 these keys, Esc quit";
+
+// Shows the figures at width x height in a window titled with the chapter, the figure
+// and the last drawing's time. S writes the figure shown into `output` (created then)
+// as <name>.<format> and prints its path. Returns when the window is closed or Esc is
+// pressed. Throws cgfs::Error with one line when there is no display to open it on, or
+// when this build has no SDL2.
+void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
+                 int height, const std::filesystem::path& output, const std::string& format);
+
+}  // namespace cgfs

@@ -1,0 +1,163 @@
+#include "cgfs/window.h"
+
+#include <SDL.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cgfs/error.h"
+#include "cgfs/image_io.h"
+
+namespace cgfs {
+
+namespace {
+
+// SDL's window, renderer and texture, released in the reverse order.
+struct Sdl {
+  Sdl() {
+    // Without a display SDL falls back to drawing off screen, where nobody would see
+    // the window: that is no display too, unless SDL_VIDEODRIVER asks for it.
+    // Only the displays the environment names are tried (a Wayland library probed
+    // without one prints a complaint of its own).
+    const bool asked = std::getenv("SDL_VIDEODRIVER") != nullptr;
+    std::string displays;
+    if (std::getenv("DISPLAY") != nullptr) {
+      displays = "x11";
+    }
+    if (std::getenv("WAYLAND_DISPLAY") != nullptr) {
+      displays += displays.empty() ? "wayland" : ",wayland";
+    }
+    if (!asked) {
+      SDL_SetHint(SDL_HINT_VIDEODRIVER, displays.c_str());
+    }
+    const std::string driver = (asked || !displays.empty()) && SDL_Init(SDL_INIT_VIDEO) == 0
+                                   ? SDL_GetCurrentVideoDriver()
+                                   : "";
+    if (driver.empty() || (!asked && (driver == "offscreen" || driver == "dummy"))) {
+      const char* display = std::getenv("DISPLAY");
+      SDL_Quit();
+      throw Error(std::string("--window: no display to open a window on (DISPLAY is ") +
+                  (display != nullptr ? display : "not set") + ")");
+    }
+  }
+  ~Sdl() {
+    if (texture != nullptr)
+      SDL_DestroyTexture(texture);
+    if (renderer != nullptr)
+      SDL_DestroyRenderer(renderer);
+    if (window != nullptr)
+      SDL_DestroyWindow(window);
+    SDL_Quit();
+  }
+  Sdl(const Sdl&) = delete;
+  Sdl& operator=(const Sdl&) = delete;
+
+  SDL_Window* window = nullptr;
+  SDL_Renderer* renderer = nullptr;
+  SDL_Texture* texture = nullptr;
+};
+
+void Check(bool ok, const char* what) {
+  if (!ok) {
+    throw Error(std::string("--window: ") + what + ": " + SDL_GetError());
+  }
+}
+
+// The figure shown, drawn by the chapter's code, and how long that took.
+struct Shown {
+  Canvas canvas{2, 2};
+  double milliseconds = 0;
+};
+
+Shown Draw(const Figure& figure, int width, int height) {
+  const auto start = std::chrono::steady_clock::now();
+  Shown shown{RenderFigure(figure, width, height), 0};
+  shown.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return shown;
+}
+
+void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown) {
+  const Image& image = shown.canvas.GetImage();
+  Check(SDL_UpdateTexture(sdl.texture, nullptr, image.Bytes().data(), image.Width() * 3) == 0,
+        "cannot update the picture");
+  SDL_RenderClear(sdl.renderer);
+  SDL_RenderCopy(sdl.renderer, sdl.texture, nullptr, nullptr);
+  SDL_RenderPresent(sdl.renderer);
+  char time[32];
+  std::snprintf(time, sizeof time, "%.1f ms", shown.milliseconds);
+  const std::string title = chapter + ": " + figure.name + " - " + figure.caption + " - " + time;
+  SDL_SetWindowTitle(sdl.window, title.c_str());
+}
+
+}  // namespace
+
+void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
+                 int height, const std::filesystem::path& output, const std::string& format) {
+  if (figures.empty()) {
+    return;
+  }
+  Sdl sdl;
+  sdl.window = SDL_CreateWindow(chapter.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+                                width, height, SDL_WINDOW_SHOWN);
+  Check(sdl.window != nullptr, "cannot open a window");
+  sdl.renderer = SDL_CreateRenderer(sdl.window, -1, 0);
+  Check(sdl.renderer != nullptr, "cannot draw in the window");
+  sdl.texture = SDL_CreateTexture(sdl.renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
+                                  width, height);
+  Check(sdl.texture != nullptr, "cannot make the picture");
+
+  std::cout << kWindowKeys << std::endl;
+  std::size_t index = 0;
+  Shown shown = Draw(*figures[index], width, height);
+  Present(sdl, chapter, *figures[index], shown);
+  const auto show = [&](std::size_t next) {
+    index = next;
+    shown = Draw(*figures[index], width, height);
+    Present(sdl, chapter, *figures[index], shown);
+  };
+  SDL_Event event;
+  while (SDL_WaitEvent(&event) != 0) {
+    if (event.type == SDL_QUIT) {
+      return;
+    }
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_EXPOSED) {
+      Present(sdl, chapter, *figures[index], shown);
+    }
+    if (event.type != SDL_KEYDOWN) {
+      continue;
+    }
+    switch (event.key.keysym.sym) {
+      case SDLK_ESCAPE:
+        return;
+      case SDLK_RIGHT:
+        show((index + 1) % figures.size());
+        break;
+      case SDLK_LEFT:
+        show((index + figures.size() - 1) % figures.size());
+        break;
+      case SDLK_r:
+        show(index);
+        break;
+      case SDLK_s: {
+        std::filesystem::create_directories(output);
+        const std::filesystem::path file = output / (figures[index]->name + "." + format);
+        WriteImage(shown.canvas.GetImage(), file);
+        std::cout << "saved " << file.string() << std::endl;
+        break;
+      }
+      case SDLK_h:
+      case SDLK_F1:
+        std::cout << kWindowKeys << std::endl;
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+}  // namespace cgfs

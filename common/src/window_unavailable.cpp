@@ -1,0 +1,15 @@
+// ShowFigures in a build without SDL2 (cmake found no libsdl2-dev): one line saying how
+// to get it; every chapter still builds and draws its files.
+#include "cgfs/error.h"
+#include "cgfs/window.h"
+
+namespace cgfs {
+
+void ShowFigures(const std::string&, const std::vector<const Figure*>&, int, int,
+                 const std::filesystem::path&, const std::string&) {
+  throw UsageError(
+      "--window needs SDL2, which this build did not find: install libsdl2-dev (scripts/setup "
+      "does) and build again");
+}
+
+}  // namespace cgfs
