@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "parallel.h"
 
 // Listing 2-3, "Canvas to Viewport": scale pixel units to viewport units; the viewport
@@ -212,6 +214,18 @@ Color ColorAtHit(const Vec3& O, const Vec3& D, const Hit& hit, int recursion_dep
     color = color * (1 - transparency) + through_color * transparency;
   }
   return color;
+}
+
+// The rotation takes the viewport's directions to the scene's (Listing 5-1), so both
+// turns act on them first, the yaw last.
+Camera MovedCamera(const Camera& camera, const cgfs::View& view) {
+  Camera moved = camera;
+  moved.position = camera.position + camera.rotation * view.move;
+  const glm::dmat4 turn =
+      glm::rotate(glm::dmat4(1.0), glm::radians(-view.yaw), glm::dvec3(0, 1, 0)) *
+      glm::rotate(glm::dmat4(1.0), glm::radians(-view.pitch), glm::dvec3(1, 0, 0));
+  moved.rotation = camera.rotation * glm::dmat3(turn);
+  return moved;
 }
 
 // Listing 5-1: the viewport moves and turns with the camera, so the direction

@@ -10,6 +10,7 @@
 #include "bvh.h"
 #include "cgfs/canvas.h"
 #include "cgfs/color.h"
+#include "cgfs/figure.h"
 #include "cgfs/math.h"
 #include "objects.h"
 #include "optimizations.h"
@@ -115,6 +116,10 @@ Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, int rec
 // Subsampling calls it directly when it already knows what a ray hits.
 Color ColorAtHit(const Vec3& O, const Vec3& D, const Hit& hit, int recursion_depth,
                  const Scene& scene, double medium_index = kAirIndex);
+
+// The camera moved as --window or --view asks (cgfs::View): along its own axes, then
+// turned to the left (yaw, about its up axis) and up (pitch, about its right axis).
+Camera MovedCamera(const Camera& camera, const cgfs::View& view);
 
 // Listing 5-1: the direction of the ray through canvas point (x, y), turned with
 // the camera.

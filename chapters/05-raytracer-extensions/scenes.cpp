@@ -1,6 +1,7 @@
 #include "scenes.h"
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -239,79 +240,82 @@ Scene SceneMagnifyingGlass() {
   return scene;
 }
 
+namespace {
+
+// A figure of a scene, drawn by `render`, whose camera --window and --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene,
+                         std::function<void(const Scene&, Canvas&)> render) {
+  return {name, caption, [scene, render](Canvas& canvas) { render(scene(), canvas); },
+          [scene, render](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            render(moved, canvas);
+          }};
+}
+
+}  // namespace
+
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   const Optimizations optimizations = settings.optimizations;
+  // The main loop --optimizations chooses, with reflections `depth` deep.
+  const auto traced = [optimizations](int depth) {
+    return [optimizations, depth](const Scene& scene, Canvas& canvas) {
+      RenderSceneAsChosen(scene, depth, canvas, optimizations);
+    };
+  };
   std::vector<cgfs::Figure> figures = {
-      {"fig-5-1-camera", "the reflective scene from (3, 0, 1), turned 45 degrees (Figure 5-1)",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneCamera(), 3, canvas, optimizations);
-       }},
+      SceneFigure("fig-5-1-camera",
+                  "the reflective scene from (3, 0, 1), turned 45 degrees (Figure 5-1)",
+                  SceneCamera, traced(3)),
   };
   for (const int count : {100, 1000, 10000, 100000}) {
-    figures.push_back({"sphere-field-" + std::to_string(count),
-                       std::to_string(count) + " small spheres, placed from a fixed seed",
-                       [count, optimizations](Canvas& canvas) {
-                         RenderSceneAsChosen(SceneSphereField(count), 3, canvas, optimizations);
-                       }});
+    figures.push_back(SceneFigure(
+        "sphere-field-" + std::to_string(count),
+        std::to_string(count) + " small spheres, placed from a fixed seed",
+        [count] { return SceneSphereField(count); }, traced(3)));
   }
   const std::vector<cgfs::Figure> more = {
-      {"triangles", "a mirror pyramid of four triangles behind the spheres",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneTriangles(), 3, canvas, optimizations);
-       }},
-      {"torus-mesh", "a torus of 102 400 triangles, through the same hierarchy",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneTorusMesh(), 3, canvas, optimizations);
-       }},
-      {"csg-operations", "union, intersection and difference of a red and a blue sphere",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneCsgOperations(), 3, canvas, optimizations);
-       }},
-      {"csg-lens", "the book's lens: the intersection of two spheres",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneCsgLens(), 3, canvas, optimizations);
-       }},
-      {"csg-death-star", "the book's Death Star: a sphere minus a smaller sphere",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneCsgDeathStar(), 3, canvas, optimizations);
-       }},
-      {"csg-nested", "a nested solid, ((A or B) minus C) and D",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneCsgNested(), 3, canvas, optimizations);
-       }},
-      {"transparency", "the red sphere 60% see-through, without bending the light",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneTransparency(), 3, canvas, optimizations);
-       }},
-      {"refraction-glass-sphere", "a glass sphere (index 1.5) in front of the spheres",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneGlassSphere(), 5, canvas, optimizations);
-       }},
-      {"refraction-magnifying-glass", "a glass lens magnifying a wall of letters F, upright",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneMagnifyingGlass(), 5, canvas, optimizations);
-       }},
-      {"thin-wires", "wires from half a pixel to five pixels wide, one ray per pixel",
-       [optimizations](Canvas& canvas) {
-         RenderSceneAsChosen(SceneThinWires(), 0, canvas, optimizations);
-       }},
-      {"subsampling-thin-wires", "the same subsampled: the wires under two pixels wide break up",
-       [optimizations](Canvas& canvas) {
-         RenderSceneSubsampled(SceneThinWires(), 0, canvas, optimizations);
-       }},
+      SceneFigure("triangles", "a mirror pyramid of four triangles behind the spheres",
+                  SceneTriangles, traced(3)),
+      SceneFigure("torus-mesh", "a torus of 102 400 triangles, through the same hierarchy",
+                  SceneTorusMesh, traced(3)),
+      SceneFigure("csg-operations", "union, intersection and difference of a red and a blue sphere",
+                  SceneCsgOperations, traced(3)),
+      SceneFigure("csg-lens", "the book's lens: the intersection of two spheres", SceneCsgLens,
+                  traced(3)),
+      SceneFigure("csg-death-star", "the book's Death Star: a sphere minus a smaller sphere",
+                  SceneCsgDeathStar, traced(3)),
+      SceneFigure("csg-nested", "a nested solid, ((A or B) minus C) and D", SceneCsgNested,
+                  traced(3)),
+      SceneFigure("transparency", "the red sphere 60% see-through, without bending the light",
+                  SceneTransparency, traced(3)),
+      SceneFigure("refraction-glass-sphere", "a glass sphere (index 1.5) in front of the spheres",
+                  SceneGlassSphere, traced(5)),
+      SceneFigure("refraction-magnifying-glass",
+                  "a glass lens magnifying a wall of letters F, upright", SceneMagnifyingGlass,
+                  traced(5)),
+      SceneFigure("thin-wires", "wires from half a pixel to five pixels wide, one ray per pixel",
+                  SceneThinWires, traced(0)),
+      SceneFigure("subsampling-thin-wires",
+                  "the same subsampled: the wires under two pixels wide break up", SceneThinWires,
+                  [optimizations](const Scene& scene, Canvas& canvas) {
+                    RenderSceneSubsampled(scene, 0, canvas, optimizations);
+                  }),
   };
   figures.insert(figures.end(), more.begin(), more.end());
   for (const int n : {2, 3, 4}) {  // n = 1 is fig-5-1-camera
-    figures.push_back({"supersampling-" + std::to_string(n * n),
-                       "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
-                       [n, optimizations](Canvas& canvas) {
-                         RenderSceneSupersampled(SceneCamera(), 3, n, canvas, optimizations);
-                       }});
+    figures.push_back(SceneFigure("supersampling-" + std::to_string(n * n),
+                                  "Figure 5-1 with " + std::to_string(n * n) + " rays per pixel",
+                                  SceneCamera,
+                                  [n, optimizations](const Scene& scene, Canvas& canvas) {
+                                    RenderSceneSupersampled(scene, 3, n, canvas, optimizations);
+                                  }));
   }
-  figures.push_back({"supersampling-adaptive",
-                     "Figure 5-1 with 16 rays only where neighbours differ",
-                     [optimizations](Canvas& canvas) {
-                       RenderSceneAdaptive(SceneCamera(), 3, canvas, optimizations);
-                     }});
+  figures.push_back(SceneFigure("supersampling-adaptive",
+                                "Figure 5-1 with 16 rays only where neighbours differ", SceneCamera,
+                                [optimizations](const Scene& scene, Canvas& canvas) {
+                                  RenderSceneAdaptive(scene, 3, canvas, optimizations);
+                                }));
   return figures;
 }

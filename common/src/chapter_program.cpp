@@ -121,6 +121,17 @@ ChapterProgram::ChapterProgram(std::string chapter, std::string description)
   app.add_flag("--window", window_,
                "show the figures in a window instead of writing them (Left/Right, S saves)")
       ->disable_flag_override();
+  app.add_option("--view", view_,
+                 "draw from a moved camera, as --window's S prints it (figures with a camera)")
+      ->type_name("X,Y,Z,YAW,PITCH")
+      ->check([](const std::string& text) {
+        try {
+          ParseView(text);
+          return std::string();
+        } catch (const Error& error) {
+          return std::string(error.what());
+        }
+      });
 }
 
 ChapterProgram::~ChapterProgram() = default;
@@ -150,8 +161,14 @@ int ChapterProgram::DrawFigures(const std::vector<Figure>& figures) const {
     return 0;
   }
 
+  const View view = view_.empty() ? View{} : ParseView(view_);
+  for (const Figure* figure : selected) {
+    if (!(view == View{}) && !figure->draw_from) {
+      throw UsageError("--view: figure '" + figure->name + "' has no camera to move");
+    }
+  }
   if (window_) {
-    ShowFigures(chapter_, selected, size.width, size.height, output_, format_);
+    ShowFigures(chapter_, selected, size.width, size.height, output_, format_, view);
     return 0;
   }
   CreateOutputFolder(output_);
@@ -159,7 +176,7 @@ int ChapterProgram::DrawFigures(const std::vector<Figure>& figures) const {
     const auto start = std::chrono::steady_clock::now();
     std::optional<ProgressDisplay> progress;
     progress.emplace(figure->name, isatty(STDERR_FILENO) == 1);
-    const Canvas canvas = RenderFigure(*figure, size.width, size.height);
+    const Canvas canvas = RenderFigure(*figure, size.width, size.height, view);
     progress.reset();
     const std::chrono::duration<double, std::milli> elapsed =
         std::chrono::steady_clock::now() - start;

@@ -1,11 +1,46 @@
 #include "cgfs/figure.h"
 
+#include <cmath>
+#include <sstream>
+
+#include "cgfs/error.h"
+
 namespace cgfs {
 
-Canvas RenderFigure(const Figure& figure, int width, int height) {
+Canvas RenderFigure(const Figure& figure, int width, int height, const View& view) {
   Canvas canvas(width, height);
-  figure.draw(canvas);
+  if (view == View{}) {
+    figure.draw(canvas);
+  } else if (figure.draw_from) {
+    figure.draw_from(canvas, view);
+  } else {
+    throw UsageError("figure '" + figure.name + "' has no camera to move (--view)");
+  }
   return canvas;
+}
+
+std::string FormatView(const View& view) {
+  std::ostringstream out;
+  out.precision(17);  // every digit, so that the same view draws the same image
+  out << view.move.x << "," << view.move.y << "," << view.move.z << "," << view.yaw << ","
+      << view.pitch;
+  return out.str();
+}
+
+View ParseView(const std::string& text) {
+  std::istringstream in(text);
+  double values[5];
+  char comma = ',';
+  for (int i = 0; i < 5; ++i) {
+    if ((i > 0 && (!(in >> comma) || comma != ',')) || !(in >> values[i]) ||
+        !std::isfinite(values[i]) || std::abs(values[i]) > 1e6) {
+      throw UsageError("'" + text + "' is not five numbers x,y,z,yaw,pitch");
+    }
+  }
+  if (in >> comma) {
+    throw UsageError("'" + text + "' is not five numbers x,y,z,yaw,pitch");
+  }
+  return {{values[0], values[1], values[2]}, values[3], values[4]};
 }
 
 }  // namespace cgfs

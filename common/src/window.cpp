@@ -73,15 +73,56 @@ struct Shown {
   double milliseconds = 0;
 };
 
-Shown Draw(const Figure& figure, int width, int height) {
+Shown Draw(const Figure& figure, int width, int height, const View& view) {
   const auto start = std::chrono::steady_clock::now();
-  Shown shown{RenderFigure(figure, width, height), 0};
+  Shown shown{RenderFigure(figure, width, height, figure.draw_from ? view : View{}), 0};
   shown.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return shown;
 }
 
-void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown) {
+// The view after a key that moves or turns the camera; `moved` false for other keys.
+View Moved(View view, SDL_Keycode key, bool& moved) {
+  moved = true;
+  switch (key) {
+    case SDLK_UP:
+      view.move.z += kWindowStep;
+      break;
+    case SDLK_DOWN:
+      view.move.z -= kWindowStep;
+      break;
+    case SDLK_d:
+      view.move.x += kWindowStep;
+      break;
+    case SDLK_a:
+      view.move.x -= kWindowStep;
+      break;
+    case SDLK_PAGEUP:
+      view.move.y += kWindowStep;
+      break;
+    case SDLK_PAGEDOWN:
+      view.move.y -= kWindowStep;
+      break;
+    case SDLK_q:
+      view.yaw += kWindowTurn;
+      break;
+    case SDLK_e:
+      view.yaw -= kWindowTurn;
+      break;
+    case SDLK_HOME:
+      view.pitch += kWindowTurn;
+      break;
+    case SDLK_END:
+      view.pitch -= kWindowTurn;
+      break;
+    default:
+      moved = false;
+  }
+  return view;
+}
+
+void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown,
+             const View& view) {
   const Image& image = shown.canvas.GetImage();
   Check(SDL_UpdateTexture(sdl.texture, nullptr, image.Bytes().data(), image.Width() * 3) == 0,
         "cannot update the picture");
@@ -90,14 +131,18 @@ void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const S
   SDL_RenderPresent(sdl.renderer);
   char time[32];
   std::snprintf(time, sizeof time, "%.1f ms", shown.milliseconds);
-  const std::string title = chapter + ": " + figure.name + " - " + figure.caption + " - " + time;
+  std::string title = chapter + ": " + figure.name + " - " + figure.caption + " - " + time;
+  if (figure.draw_from && !(view == View{})) {
+    title += " - view " + FormatView(view);
+  }
   SDL_SetWindowTitle(sdl.window, title.c_str());
 }
 
 }  // namespace
 
 void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
-                 int height, const std::filesystem::path& output, const std::string& format) {
+                 int height, const std::filesystem::path& output, const std::string& format,
+                 const View& start_view) {
   if (figures.empty()) {
     return;
   }
@@ -113,25 +158,36 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
 
   std::cout << kWindowKeys << std::endl;
   std::size_t index = 0;
-  Shown shown = Draw(*figures[index], width, height);
-  Present(sdl, chapter, *figures[index], shown);
+  View view = start_view;
+  Shown shown;
   const auto show = [&](std::size_t next) {
     index = next;
-    shown = Draw(*figures[index], width, height);
-    Present(sdl, chapter, *figures[index], shown);
+    shown = Draw(*figures[index], width, height, view);
+    Present(sdl, chapter, *figures[index], shown, view);
   };
+  show(0);
   SDL_Event event;
   while (SDL_WaitEvent(&event) != 0) {
     if (event.type == SDL_QUIT) {
       return;
     }
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_EXPOSED) {
-      Present(sdl, chapter, *figures[index], shown);
+      Present(sdl, chapter, *figures[index], shown, view);
     }
     if (event.type != SDL_KEYDOWN) {
       continue;
     }
-    switch (event.key.keysym.sym) {
+    const SDL_Keycode key = event.key.keysym.sym;
+    bool moved = false;
+    const View next = Moved(view, key, moved);
+    if (moved) {
+      if (figures[index]->draw_from) {
+        view = next;
+        show(index);
+      }
+      continue;
+    }
+    switch (key) {
       case SDLK_ESCAPE:
         return;
       case SDLK_RIGHT:
@@ -141,13 +197,18 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
         show((index + figures.size() - 1) % figures.size());
         break;
       case SDLK_r:
+        view = start_view;
         show(index);
         break;
       case SDLK_s: {
         std::filesystem::create_directories(output);
         const std::filesystem::path file = output / (figures[index]->name + "." + format);
         WriteImage(shown.canvas.GetImage(), file);
-        std::cout << "saved " << file.string() << std::endl;
+        std::cout << "saved " << file.string();
+        if (figures[index]->draw_from) {
+          std::cout << " (--view " << FormatView(view) << ")";
+        }
+        std::cout << std::endl;
         break;
       }
       case SDLK_h:

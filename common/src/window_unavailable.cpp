@@ -6,7 +6,7 @@
 namespace cgfs {
 
 void ShowFigures(const std::string&, const std::vector<const Figure*>&, int, int,
-                 const std::filesystem::path&, const std::string&) {
+                 const std::filesystem::path&, const std::string&, const View&) {
   throw UsageError(
       "--window needs SDL2, which this build did not find: install libsdl2-dev (scripts/setup "
       "does) and build again");

@@ -88,3 +88,17 @@ TEST_CASE("two renders of one scene from two cameras at once draw what each draw
   CHECK_THAT(there.GetImage(), IsSameImageAs(there_alone.GetImage()));
   CHECK_FALSE(here.GetImage() == there.GetImage());
 }
+
+TEST_CASE("MovedCamera: along the camera's own axes, then turned left and up", "[equations]") {
+  const Camera straight;  // at the origin, looking down +z
+  // Turned 90 degrees to the left the camera looks down -x; 90 degrees up, down +y.
+  CheckNear(MovedCamera(straight, {{0, 0, 0}, 90, 0}).rotation * Vec3{0, 0, 1}, {-1, 0, 0});
+  CheckNear(MovedCamera(straight, {{0, 0, 0}, 0, 90}).rotation * Vec3{0, 0, 1}, {0, 1, 0});
+  // Figure 5-1's camera at (3, 0, 1) looks towards the spheres, along (-0.7071, 0, 0.7071);
+  // its right is (0.7071, 0, 0.7071): one step forward, or one to the right, goes there.
+  const Camera turned = SceneCamera().camera;
+  CheckNear(MovedCamera(turned, {{0, 0, 1}, 0, 0}).position, {2.2929, 0, 1.7071}, 1e-4);
+  CheckNear(MovedCamera(turned, {{1, 0, 0}, 0, 0}).position, {3.7071, 0, 1.7071}, 1e-4);
+  // No view, no move.
+  CheckNear(MovedCamera(turned, {}).position, turned.position);
+}

@@ -4,10 +4,12 @@
 # golden image; Right shows the next figure, whose saved file is its golden image too;
 # Esc closes the window, exit status 0. Without a display --window says so in one
 # line, exit status 2. Leaves a screenshot in WORK_DIR/window.png. Skipped without
-# Xvfb and xdotool (CI installs them: scripts/setup).
-# Usage: check_window.sh CHAPTER_02_PROGRAM GOLDEN_DIR WORK_DIR
+# Xvfb and xdotool (CI installs them: scripts/setup). Then chapter 5's camera: moved
+# forward and turned with the keys, the figure saved from the window is byte for byte
+# what the program draws for the view the window printed (--view).
+# Usage: check_window.sh CHAPTER_02_PROGRAM CHAPTER_05_PROGRAM GOLDEN_DIR WORK_DIR
 set -euo pipefail
-program=$1 golden=$2 work=$3
+program=$1 camera_program=$2 golden=$3 work=$4
 rm -rf "$work"
 mkdir -p "$work"
 failed=0
@@ -42,7 +44,7 @@ program_pid=$!
 window=$(timeout 20 xdotool search --sync --name "^02-basic-rays: " | head -1)
 xdotool windowfocus --sync "$window"
 saved() {  # waits until the program says it saved $1
-  for _ in $(seq 100); do grep -q "saved .*/$1\$" "$work/window.txt" && return 0; sleep 0.1; done
+  for _ in $(seq 100); do grep -q "saved .*/$1\( \|\$\)" "$work/window.txt" && return 0; sleep 0.1; done
   return 1
 }
 same_as_golden() {
@@ -65,5 +67,32 @@ wait $program_pid || status=$?
 program_pid=""
 [ $status -eq 0 ] || fail "Esc: exit status $status, expected 0"
 cat "$work/window.txt"
-[ $failed -eq 0 ] && echo "PASS: the window shows, saves and flips through the figures"
+
+# Chapter 5's camera, moved in the window: forward twice, turned left once.
+"$camera_program" --window --figure fig-5-1-camera --output "$work/moved" >"$work/window.txt" 2>&1 &
+program_pid=$!
+window=$(timeout 20 xdotool search --sync --name "^05-raytracer-extensions: " | head -1)
+xdotool windowfocus --sync "$window"
+xdotool key Up Up q s
+if saved fig-5-1-camera.png; then
+  view=$(grep -o -- "--view [^)]*" "$work/window.txt" | tail -1 | cut -d' ' -f2)
+  echo "the window's view: $view"
+  [ "$view" = "0,0,0.5,5,0" ] || fail "the view after Up Up Q is $view, not 0,0,0.5,5,0"
+  "$camera_program" --figure fig-5-1-camera --view "$view" --output "$work/drawn" >/dev/null
+  cmp -s "$work/moved/fig-5-1-camera.png" "$work/drawn/fig-5-1-camera.png" \
+    && echo "ok: the moved window's figure is what --view $view draws" \
+    || fail "the moved window's figure differs from what --view $view draws"
+  cmp -s "$work/moved/fig-5-1-camera.png" "$golden/../05-raytracer-extensions/fig-5-1-camera.png" \
+    && fail "the camera did not move: the figure is the golden one"
+else
+  fail "the moved figure was not saved"
+fi
+xdotool getwindowname "$window" | grep -q " - view 0,0,0.5,5,0$" \
+  || fail "the title does not show the view"
+import -display "$DISPLAY" -window "$window" "$work/window-moved.png" 2>/dev/null || true
+xdotool key Escape
+wait $program_pid || fail "chapter 5's window did not close cleanly"
+program_pid=""
+cat "$work/window.txt"
+[ $failed -eq 0 ] && echo "PASS: the window shows, saves and flips through the figures, and moves the camera"
 exit $failed

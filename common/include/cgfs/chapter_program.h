@@ -1,6 +1,6 @@
 // The program every chapter builds from its main.cpp: it draws the chapter's
 // figures into out/<chapter>/, with the options every chapter shares (--output,
-// --size, --figure, --format, --list, --window, --help).
+// --size, --figure, --format, --list, --window, --view, --help).
 #pragma once
 
 #include <functional>
@@ -44,6 +44,7 @@ class ChapterProgram {
   std::vector<std::string> selected_;
   bool list_ = false;
   bool window_ = false;
+  std::string view_;
 };
 
 }  // namespace cgfs

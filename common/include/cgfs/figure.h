@@ -4,18 +4,38 @@
 #include <functional>
 #include <string>
 
+#include <glm/vec3.hpp>
+
 #include "cgfs/canvas.h"
 
 namespace cgfs {
+
+// A figure's camera moved away from where the chapter puts it (--window, --view): first
+// `move` along the camera's own right, up and forward axes, then turned `yaw` degrees
+// to the left and `pitch` degrees up. All zero is the chapter's own view.
+struct View {
+  glm::dvec3 move{0, 0, 0};
+  double yaw = 0;
+  double pitch = 0;
+  friend bool operator==(const View&, const View&) = default;
+};
 
 struct Figure {
   std::string name;     // file name without extension, e.g. "fig-2-11"
   std::string caption;  // one line: what the figure shows
   // Draws onto a canvas of the requested size, cleared to white.
   std::function<void(Canvas&)> draw;
+  // The same from a moved camera; empty for a figure without a camera to move.
+  std::function<void(Canvas&, const View&)> draw_from = {};
 };
 
-// Draws one figure on a fresh white canvas of the given size.
-Canvas RenderFigure(const Figure& figure, int width, int height);
+// Draws one figure on a fresh white canvas of the given size, from `view` (which must
+// be the chapter's own for a figure without a camera: cgfs::UsageError otherwise).
+Canvas RenderFigure(const Figure& figure, int width, int height, const View& view = {});
+
+// A view as --view takes it and --window prints it: "x,y,z,yaw,pitch".
+std::string FormatView(const View& view);
+// The view of such text; cgfs::UsageError with one line if it is not one.
+View ParseView(const std::string& text);
 
 }  // namespace cgfs
