@@ -2,6 +2,7 @@
 
 #include <SDL.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -45,12 +46,17 @@ struct Sdl {
     }
   }
   ~Sdl() {
-    if (texture != nullptr)
-      SDL_DestroyTexture(texture);
-    if (renderer != nullptr)
+    for (SDL_Texture* each : {preview, texture}) {
+      if (each != nullptr) {
+        SDL_DestroyTexture(each);
+      }
+    }
+    if (renderer != nullptr) {
       SDL_DestroyRenderer(renderer);
-    if (window != nullptr)
+    }
+    if (window != nullptr) {
       SDL_DestroyWindow(window);
+    }
     SDL_Quit();
   }
   Sdl(const Sdl&) = delete;
@@ -59,6 +65,7 @@ struct Sdl {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
   SDL_Texture* texture = nullptr;
+  SDL_Texture* preview = nullptr;  // half the size, stretched over the window
 };
 
 void Check(bool ok, const char* what) {
@@ -71,6 +78,7 @@ void Check(bool ok, const char* what) {
 struct Shown {
   Canvas canvas{2, 2};
   double milliseconds = 0;
+  bool preview = false;  // drawn at half size while the camera moves
 };
 
 Shown Draw(const Figure& figure, int width, int height, const View& view) {
@@ -124,10 +132,11 @@ View Moved(View view, SDL_Keycode key, bool& moved) {
 void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown,
              const View& view) {
   const Image& image = shown.canvas.GetImage();
-  Check(SDL_UpdateTexture(sdl.texture, nullptr, image.Bytes().data(), image.Width() * 3) == 0,
+  SDL_Texture* texture = shown.preview ? sdl.preview : sdl.texture;
+  Check(SDL_UpdateTexture(texture, nullptr, image.Bytes().data(), image.Width() * 3) == 0,
         "cannot update the picture");
   SDL_RenderClear(sdl.renderer);
-  SDL_RenderCopy(sdl.renderer, sdl.texture, nullptr, nullptr);
+  SDL_RenderCopy(sdl.renderer, texture, nullptr, nullptr);
   SDL_RenderPresent(sdl.renderer);
   char time[32];
   std::snprintf(time, sizeof time, "%.1f ms", shown.milliseconds);
@@ -135,7 +144,37 @@ void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const S
   if (figure.draw_from && !(view == View{})) {
     title += " - view " + FormatView(view);
   }
+  if (shown.preview) {
+    title += " - half resolution while moving";
+  }
   SDL_SetWindowTitle(sdl.window, title.c_str());
+}
+
+void Open(Sdl& sdl, const std::string& chapter, int width, int height, int preview_width,
+          int preview_height) {
+  sdl.window = SDL_CreateWindow(chapter.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+                                width, height, SDL_WINDOW_SHOWN);
+  Check(sdl.window != nullptr, "cannot open a window");
+  sdl.renderer = SDL_CreateRenderer(sdl.window, -1, 0);
+  Check(sdl.renderer != nullptr, "cannot draw in the window");
+  sdl.texture = SDL_CreateTexture(sdl.renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
+                                  width, height);
+  sdl.preview = SDL_CreateTexture(sdl.renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
+                                  preview_width, preview_height);
+  Check(sdl.texture != nullptr && sdl.preview != nullptr, "cannot make the picture");
+}
+
+// S: the figure shown into `output`, through the safe write path, and where it went.
+void Save(const Figure& figure, const Shown& shown, const std::filesystem::path& output,
+          const std::string& format, const View& view) {
+  std::filesystem::create_directories(output);
+  const std::filesystem::path file = output / (figure.name + "." + format);
+  WriteImage(shown.canvas.GetImage(), file);
+  std::cout << "saved " << file.string();
+  if (figure.draw_from) {
+    std::cout << " (--view " << FormatView(view) << ")";
+  }
+  std::cout << std::endl;
 }
 
 }  // namespace
@@ -146,28 +185,34 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
   if (figures.empty()) {
     return;
   }
+  // While the camera moves, frames are drawn at half the size (even, as canvases are)
+  // and stretched; the full one follows once no key has come for kWindowSettle ms.
+  const int preview_width = std::max(2, width / 4 * 2);
+  const int preview_height = std::max(2, height / 4 * 2);
   Sdl sdl;
-  sdl.window = SDL_CreateWindow(chapter.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
-                                width, height, SDL_WINDOW_SHOWN);
-  Check(sdl.window != nullptr, "cannot open a window");
-  sdl.renderer = SDL_CreateRenderer(sdl.window, -1, 0);
-  Check(sdl.renderer != nullptr, "cannot draw in the window");
-  sdl.texture = SDL_CreateTexture(sdl.renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
-                                  width, height);
-  Check(sdl.texture != nullptr, "cannot make the picture");
+  Open(sdl, chapter, width, height, preview_width, preview_height);
 
   std::cout << kWindowKeys << std::endl;
   std::size_t index = 0;
   View view = start_view;
   Shown shown;
-  const auto show = [&](std::size_t next) {
+  const auto show = [&](std::size_t next, bool preview = false) {
     index = next;
-    shown = Draw(*figures[index], width, height, view);
+    shown = preview ? Draw(*figures[index], preview_width, preview_height, view)
+                    : Draw(*figures[index], width, height, view);
+    shown.preview = preview;
     Present(sdl, chapter, *figures[index], shown, view);
   };
   show(0);
   SDL_Event event;
-  while (SDL_WaitEvent(&event) != 0) {
+  while (true) {
+    if (shown.preview && SDL_WaitEventTimeout(&event, kWindowSettle) == 0) {
+      show(index);  // the camera has stopped: the full picture
+      continue;
+    }
+    if (!shown.preview && SDL_WaitEvent(&event) == 0) {
+      return;
+    }
     if (event.type == SDL_QUIT) {
       return;
     }
@@ -183,7 +228,7 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
     if (moved) {
       if (figures[index]->draw_from) {
         view = next;
-        show(index);
+        show(index, true);
       }
       continue;
     }
@@ -200,17 +245,12 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
         view = start_view;
         show(index);
         break;
-      case SDLK_s: {
-        std::filesystem::create_directories(output);
-        const std::filesystem::path file = output / (figures[index]->name + "." + format);
-        WriteImage(shown.canvas.GetImage(), file);
-        std::cout << "saved " << file.string();
-        if (figures[index]->draw_from) {
-          std::cout << " (--view " << FormatView(view) << ")";
+      case SDLK_s:
+        if (shown.preview) {
+          show(index);  // what is saved is always the full picture
         }
-        std::cout << std::endl;
+        Save(*figures[index], shown, output, format, view);
         break;
-      }
       case SDLK_h:
       case SDLK_F1:
         std::cout << kWindowKeys << std::endl;

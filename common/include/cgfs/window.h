@@ -20,6 +20,9 @@ inline constexpr char kWindowKeys[] =
 // How far one key press moves the camera (scene units) or turns it (degrees).
 inline constexpr double kWindowStep = 0.25;
 inline constexpr double kWindowTurn = 5;
+// While the camera moves, frames are drawn at half size; the full one once no key has
+// come for this many milliseconds.
+inline constexpr int kWindowSettle = 150;
 
 // Shows the figures at width x height in a window titled with the chapter, the figure,
 // the last drawing's time and, once moved, the view. A figure with a camera starts from
