@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cgfs/error.h"
@@ -89,9 +90,8 @@ Shown Draw(const Figure& figure, int width, int height, const View& view) {
   return shown;
 }
 
-// The view after a key that moves or turns the camera; `moved` false for other keys.
-View Moved(View view, SDL_Keycode key, bool& moved) {
-  moved = true;
+// The view after a key that moves or turns the camera; nothing for other keys.
+std::optional<View> Moved(View view, SDL_Keycode key) {
   switch (key) {
     case SDLK_UP:
       view.move.z += kWindowStep;
@@ -124,7 +124,7 @@ View Moved(View view, SDL_Keycode key, bool& moved) {
       view.pitch -= kWindowTurn;
       break;
     default:
-      moved = false;
+      return std::nullopt;
   }
   return view;
 }
@@ -177,79 +177,64 @@ void Save(const Figure& figure, const Shown& shown, const std::filesystem::path&
   std::cout << std::endl;
 }
 
-}  // namespace
-
-void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
-                 int height, const std::filesystem::path& output, const std::string& format,
-                 const View& start_view) {
-  if (figures.empty()) {
-    return;
+// The window's state: the figure shown, from which view, drawn how.
+class Session {
+ public:
+  Session(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
+          int height, const View& view)
+      : chapter_(chapter),
+        figures_(figures),
+        width_(width),
+        height_(height),
+        // While the camera moves, frames are drawn at half the size (even, as canvases
+        // are) and stretched; the full one follows after kWindowSettle ms without a key.
+        preview_width_(std::max(2, width / 4 * 2)),
+        preview_height_(std::max(2, height / 4 * 2)),
+        start_view_(view),
+        view_(view) {
+    Open(sdl_, chapter, width, height, preview_width_, preview_height_);
   }
-  // While the camera moves, frames are drawn at half the size (even, as canvases are)
-  // and stretched; the full one follows once no key has come for kWindowSettle ms.
-  const int preview_width = std::max(2, width / 4 * 2);
-  const int preview_height = std::max(2, height / 4 * 2);
-  Sdl sdl;
-  Open(sdl, chapter, width, height, preview_width, preview_height);
 
-  std::cout << kWindowKeys << std::endl;
-  std::size_t index = 0;
-  View view = start_view;
-  Shown shown;
-  const auto show = [&](std::size_t next, bool preview = false) {
-    index = next;
-    shown = preview ? Draw(*figures[index], preview_width, preview_height, view)
-                    : Draw(*figures[index], width, height, view);
-    shown.preview = preview;
-    Present(sdl, chapter, *figures[index], shown, view);
-  };
-  show(0);
-  SDL_Event event;
-  while (true) {
-    if (shown.preview && SDL_WaitEventTimeout(&event, kWindowSettle) == 0) {
-      show(index);  // the camera has stopped: the full picture
-      continue;
-    }
-    if (!shown.preview && SDL_WaitEvent(&event) == 0) {
-      return;
-    }
-    if (event.type == SDL_QUIT) {
-      return;
-    }
-    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_EXPOSED) {
-      Present(sdl, chapter, *figures[index], shown, view);
-    }
-    if (event.type != SDL_KEYDOWN) {
-      continue;
-    }
-    const SDL_Keycode key = event.key.keysym.sym;
-    bool moved = false;
-    const View next = Moved(view, key, moved);
-    if (moved) {
-      if (figures[index]->draw_from) {
-        view = next;
-        show(index, true);
+  void Show(std::size_t index, bool preview = false) {
+    index_ = index;
+    const Figure& figure = *figures_[index];
+    shown_ = preview ? Draw(figure, preview_width_, preview_height_, view_)
+                     : Draw(figure, width_, height_, view_);
+    shown_.preview = preview;
+    Present();
+  }
+  void Present() { cgfs::Present(sdl_, chapter_, *figures_[index_], shown_, view_); }
+  bool Preview() const { return shown_.preview; }
+  std::size_t Index() const { return index_; }
+
+  // What a key does; false when it closes the window.
+  bool Press(SDL_Keycode key, const std::filesystem::path& output, const std::string& format) {
+    const std::size_t count = figures_.size();
+    if (const std::optional<View> moved = Moved(view_, key)) {
+      if (figures_[index_]->draw_from) {
+        view_ = *moved;
+        Show(index_, true);
       }
-      continue;
+      return true;
     }
     switch (key) {
       case SDLK_ESCAPE:
-        return;
+        return false;
       case SDLK_RIGHT:
-        show((index + 1) % figures.size());
+        Show((index_ + 1) % count);
         break;
       case SDLK_LEFT:
-        show((index + figures.size() - 1) % figures.size());
+        Show((index_ + count - 1) % count);
         break;
       case SDLK_r:
-        view = start_view;
-        show(index);
+        view_ = start_view_;
+        Show(index_);
         break;
       case SDLK_s:
-        if (shown.preview) {
-          show(index);  // what is saved is always the full picture
+        if (shown_.preview) {
+          Show(index_);  // what is saved is always the full picture
         }
-        Save(*figures[index], shown, output, format, view);
+        Save(*figures_[index_], shown_, output, format, view_);
         break;
       case SDLK_h:
       case SDLK_F1:
@@ -257,6 +242,48 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
         break;
       default:
         break;
+    }
+    return true;
+  }
+
+ private:
+  Sdl sdl_;
+  std::string chapter_;
+  const std::vector<const Figure*>& figures_;
+  int width_, height_, preview_width_, preview_height_;
+  View start_view_, view_;
+  std::size_t index_ = 0;
+  Shown shown_;
+};
+
+}  // namespace
+
+void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& figures, int width,
+                 int height, const std::filesystem::path& output, const std::string& format,
+                 const View& view) {
+  if (figures.empty()) {
+    return;
+  }
+  Session session(chapter, figures, width, height, view);
+  std::cout << kWindowKeys << std::endl;
+  session.Show(0);
+  SDL_Event event;
+  while (true) {
+    if (session.Preview() && SDL_WaitEventTimeout(&event, kWindowSettle) == 0) {
+      session.Show(session.Index());  // the camera has stopped: the full picture
+      continue;
+    }
+    if (!session.Preview() && SDL_WaitEvent(&event) == 0) {
+      return;
+    }
+    if (event.type == SDL_QUIT) {
+      return;
+    }
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_EXPOSED) {
+      session.Present();
+    }
+    if (event.type == SDL_KEYDOWN && !session.Press(event.key.keysym.sym, output, format)) {
+      return;
     }
   }
 }
