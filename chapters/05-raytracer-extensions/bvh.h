@@ -66,7 +66,6 @@ class Bvh {
     double largest = 0;
     double second = 0;
     void Add(const Bound& bound);
-    void Add(const Group& other);
   };
   Group Summarise(int first, int count, const std::vector<Bound>& items) const;
   void Build(int first, const Group& group, std::vector<Bound>& items, int depth);

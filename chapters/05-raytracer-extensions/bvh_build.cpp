@@ -111,14 +111,6 @@ void Bvh::Group::Add(const Bound& bound) {
   }
 }
 
-void Bvh::Group::Add(const Group& other) {
-  Grow(box, other.box);
-  Grow(centres, other.centres);
-  count += other.count;
-  second = std::max(std::min(largest, other.largest), std::max(second, other.second));
-  largest = std::max(largest, other.largest);
-}
-
 Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   // The build reorders these in place, which keeps its passes over them in memory
   // order; order_ takes the objects' final order.
