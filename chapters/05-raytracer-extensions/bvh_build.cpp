@@ -30,14 +30,6 @@ double SurfaceArea(const Box& box) {
   return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
 }
 
-// Union, in place: the build grows millions of boxes.
-inline void Grow(Box& box, const Box& other) {
-  for (int axis = 0; axis < 3; ++axis) {
-    box.min[axis] = std::min(box.min[axis], other.min[axis]);
-    box.max[axis] = std::max(box.max[axis], other.max[axis]);
-  }
-}
-
 int LongestAxis(const Vec3& size) {
   if (size.x >= size.y && size.x >= size.z) {
     return 0;
@@ -74,7 +66,7 @@ Plane CheapestPlane(const Bins& bins, double area) {
   Box right;
   int n = 0;
   for (int p = kBins - 1; p > 0; --p) {
-    Grow(right, bins[p].box);
+    right = Union(right, bins[p].box);
     n += bins[p].count;
     right_area[p] = SurfaceArea(right);
     right_count[p] = n;
@@ -83,7 +75,7 @@ Plane CheapestPlane(const Bins& bins, double area) {
   Box left;
   n = 0;
   for (int p = 1; p < kBins; ++p) {
-    Grow(left, bins[p - 1].box);
+    left = Union(left, bins[p - 1].box);
     n += bins[p - 1].count;
     if (n == 0 || right_count[p] == 0) {
       continue;
@@ -100,8 +92,8 @@ Plane CheapestPlane(const Bins& bins, double area) {
 }  // namespace
 
 void Bvh::Group::Add(const Bound& bound) {
-  Grow(box, bound.box);
-  Grow(centres, {bound.centre, bound.centre});
+  box = Union(box, bound.box);
+  centres = Union(centres, {bound.centre, bound.centre});
   ++count;
   if (bound.area > largest) {
     second = largest;
@@ -198,7 +190,7 @@ int Bvh::SplitOffLargest(int first, const Group& group, std::vector<Bound>& item
   Box others;
   for (int i = first; i < first + group.count; ++i) {
     if (i != largest) {
-      Grow(others, items[i].box);
+      others = Union(others, items[i].box);
     }
   }
   if (!(group.largest > SurfaceArea(others))) {
@@ -248,7 +240,7 @@ int Bvh::SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& i
     for (int axis = 0; axis < 3; ++axis) {
       if (binning.scale[axis] > 0) {
         Bin& bin = bins[axis][binning.Of(bound.centre, axis)];
-        Grow(bin.box, bound.box);
+        bin.box = Union(bin.box, bound.box);
         ++bin.count;
       }
     }

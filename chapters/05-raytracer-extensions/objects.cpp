@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-Box Union(const Box& a, const Box& b) {
-  return {glm::min(a.min, b.min), glm::max(a.max, b.max)};
-}
-
 Box Intersection(const Box& a, const Box& b) {
   return {glm::max(a.min, b.min), glm::min(a.max, b.max)};
 }
