@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "cgfs/compare.h"
 #include "cgfs/image.h"
 
 namespace Catch {
@@ -61,20 +62,18 @@ class IsSameImageAs : public Catch::MatcherBase<Image> {
       difference_ = "sizes differ";
       return false;
     }
-    long long differing = 0;
-    for (int row = 0; row < actual.Height(); ++row) {
-      for (int column = 0; column < actual.Width(); ++column) {
-        if (actual.At(column, row) != expected_.At(column, row) && differing++ == 0) {
-          difference_ = FirstDifference(actual, column, row);
-        }
-      }
+    // cgfs-compare's comparison with no tolerance at all: any changed pixel counts.
+    const Comparison exact = CompareImages(expected_, actual, {0, 0.0});
+    if (exact.differing_pixels > 0) {
+      const Comparison::Pixel& first = exact.first_differing;
+      difference_ = std::to_string(exact.differing_pixels) + " of " + std::to_string(exact.pixels) +
+                    " pixels differ; the first at canvas (" +
+                    std::to_string(first.column - actual.Width() / 2) + ", " +
+                    std::to_string(actual.Height() / 2 - first.row - 1) +
+                    "): " + Catch::StringMaker<Rgb8>::convert(first.yours) + " instead of " +
+                    Catch::StringMaker<Rgb8>::convert(first.ours);
     }
-    if (differing > 0) {
-      difference_ = std::to_string(differing) + " of " +
-                    std::to_string(static_cast<long long>(actual.Width()) * actual.Height()) +
-                    " pixels differ; the first " + difference_;
-    }
-    return differing == 0;
+    return exact.differing_pixels == 0;
   }
 
   std::string describe() const override {
@@ -83,13 +82,6 @@ class IsSameImageAs : public Catch::MatcherBase<Image> {
   }
 
  private:
-  std::string FirstDifference(const Image& actual, int column, int row) const {
-    return "at canvas (" + std::to_string(column - actual.Width() / 2) + ", " +
-           std::to_string(actual.Height() / 2 - row - 1) +
-           "): " + Catch::StringMaker<Rgb8>::convert(actual.At(column, row)) + " instead of " +
-           Catch::StringMaker<Rgb8>::convert(expected_.At(column, row));
-  }
-
   Image expected_;
   mutable std::string difference_;  // what match() found, for describe()
 };
