@@ -1,5 +1,8 @@
 #include "scenes.h"
 
+#include <functional>
+#include <string>
+
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
   static const Model cube{
@@ -54,6 +57,21 @@ Scene SceneTransformedCubes() {
   return scene;
 }
 
+namespace {
+
+// A figure of a scene, drawn by RenderScene, whose camera --window and --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene) {
+  return {name, caption, [scene](Canvas& canvas) { RenderScene(scene(), canvas); },
+          [scene](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            RenderScene(moved, canvas);
+          }};
+}
+
+}  // namespace
+
 std::vector<cgfs::Figure> Figures() {
   return {
       {"fig-10-2", "the cube moved 7 units forward and 1.5 left, RenderObject (Figure 10-2)",
@@ -65,9 +83,9 @@ std::vector<cgfs::Figure> Figures() {
          }
          RenderObject(moved, CubeModel().triangles, canvas, Viewport{});
        }},
-      {"fig-10-3", "two instances of the cube model (Figure 10-3)",
-       [](Canvas& canvas) { RenderScene(SceneTwoCubes(), canvas); }},
-      {"fig-10-10", "scaled and rotated instances from a moved, turned camera (Figure 10-10)",
-       [](Canvas& canvas) { RenderScene(SceneTransformedCubes(), canvas); }},
+      SceneFigure("fig-10-3", "two instances of the cube model (Figure 10-3)", SceneTwoCubes),
+      SceneFigure("fig-10-10",
+                  "scaled and rotated instances from a moved, turned camera (Figure 10-10)",
+                  SceneTransformedCubes),
   };
 }

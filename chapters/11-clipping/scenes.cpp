@@ -1,5 +1,8 @@
 #include "scenes.h"
 
+#include <functional>
+#include <string>
+
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
   static const Model cube{
@@ -63,12 +66,28 @@ Scene SceneCubeCutByNearPlane() {
   return scene;
 }
 
+namespace {
+
+// A figure of a scene, drawn by RenderScene, whose camera --window and --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene) {
+  return {name, caption, [scene](Canvas& canvas) { RenderScene(scene(), canvas); },
+          [scene](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            RenderScene(moved, canvas);
+          }};
+}
+
+}  // namespace
+
 std::vector<cgfs::Figure> Figures() {
   return {
-      {"clipped-scene",
-       "the scene of Figure 10-10 with a third cube behind the camera, which clipping rejects",
-       [](Canvas& canvas) { RenderScene(SceneWithCubeBehindCamera(), canvas); }},
-      {"near-plane-cut", "a cube cut by the near plane: its triangles there are split",
-       [](Canvas& canvas) { RenderScene(SceneCubeCutByNearPlane(), canvas); }},
+      SceneFigure(
+          "clipped-scene",
+          "the scene of Figure 10-10 with a third cube behind the camera, which clipping rejects",
+          SceneWithCubeBehindCamera),
+      SceneFigure("near-plane-cut", "a cube cut by the near plane: its triangles there are split",
+                  SceneCubeCutByNearPlane),
   };
 }

@@ -1,7 +1,9 @@
 #include "scenes.h"
 
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <string>
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
@@ -170,6 +172,33 @@ Scene SceneOpenBox() {
   return scene;
 }
 
+Scene SceneOpenBoxSaidClosed() {
+  static const Model box_said_closed = [] {
+    Model model = OpenBoxModel();
+    model.closed = true;
+    return model;
+  }();
+  Scene scene = SceneOpenBox();
+  scene.instances[0].model = &box_said_closed;
+  return scene;
+}
+
+namespace {
+
+// A figure of a scene, drawn by RenderScene with `method`, whose camera --window and
+// --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene, const HiddenSurfaceRemoval& method) {
+  return {name, caption, [scene, method](Canvas& canvas) { RenderScene(scene(), canvas, method); },
+          [scene, method](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            RenderScene(moved, canvas, method);
+          }};
+}
+
+}  // namespace
+
 std::vector<cgfs::Figure> Figures() {
   const HiddenSurfaceRemoval model_order{.draw_order = DrawOrder::kModelOrder,
                                          .cull_back_faces = false};
@@ -179,56 +208,52 @@ std::vector<cgfs::Figure> Figures() {
   const HiddenSurfaceRemoval depth{.cull_back_faces = false};
   const HiddenSurfaceRemoval culled{};
   const HiddenSurfaceRemoval outlines{.outlines = true};
-  const auto draw = [](Scene (*scene)(), HiddenSurfaceRemoval method) {
-    return [scene, method](Canvas& canvas) { RenderScene(scene(), canvas, method); };
-  };
   return {
-      {"fig-12-1-model-order",
-       "Figure 10-10's cubes filled, in model order: back faces paint over front faces",
-       draw(SceneTransformedCubes, model_order)},
-      {"overlapping-squares-model-order",
-       "four squares listed nearest first and drawn in that order: each far one paints over",
-       draw(SceneOverlappingSquares, model_order)},
-      {"painters-algorithm", "the same squares drawn back to front by the painter's algorithm",
-       draw(SceneOverlappingSquares, painters)},
-      {"painters-algorithm-cubes",
-       "Figure 10-10's cubes by the painter: a hidden bottom face sorts in front of a side",
-       draw(SceneTransformedCubes, painters)},
-      {"fig-12-4-depth-buffer", "the same cubes with the 1/z depth buffer",
-       draw(SceneTransformedCubes, depth)},
-      {"back-face-culling",
-       "the depth buffer with back faces culled: the same picture from half the triangles",
-       draw(SceneTransformedCubes, culled)},
-      {"outlines", "the culled, depth-buffered cubes with each triangle's edges outlined",
-       draw(SceneTransformedCubes, outlines)},
-      {"crossing-planes-depth-z",
-       "a floor and a ramp crossing far away, depth-buffered with z: the crossing is wrong",
-       draw(SceneCrossingPlanes, depth_z)},
-      {"crossing-planes-depth-inverse-z",
-       "the floor and the ramp depth-buffered with 1/z: a straight crossing",
-       draw(SceneCrossingPlanes, depth)},
-      {"cyclic-overlap-painters",
-       "Figure 12-2, three triangles over one another in a cycle: the painter gets one wrong",
-       draw(SceneCyclicOverlap, painters)},
-      {"cyclic-overlap-depth-buffer", "the same three triangles with the depth buffer",
-       draw(SceneCyclicOverlap, depth)},
-      {"intersecting-painters",
-       "two triangles passing through each other: the painter draws one over the other",
-       draw(SceneIntersectingTriangles, painters)},
-      {"intersecting-depth-buffer", "the same two triangles with the depth buffer",
-       draw(SceneIntersectingTriangles, depth)},
-      {"open-box", "an open box: not closed, so nothing is culled and its inside shows",
-       draw(SceneOpenBox, culled)},
-      {"open-box-culled", "the open box culled as if it were closed: its inside faces are missing",
-       [](Canvas& canvas) {
-         static const Model box_said_closed = [] {
-           Model model = OpenBoxModel();
-           model.closed = true;
-           return model;
-         }();
-         Scene scene = SceneOpenBox();
-         scene.instances[0].model = &box_said_closed;
-         RenderScene(scene, canvas);
-       }},
+      SceneFigure("fig-12-1-model-order",
+                  "Figure 10-10's cubes filled, in model order: back faces paint over front faces",
+                  SceneTransformedCubes, model_order),
+      SceneFigure(
+          "overlapping-squares-model-order",
+          "four squares listed nearest first and drawn in that order: each far one paints over",
+          SceneOverlappingSquares, model_order),
+      SceneFigure("painters-algorithm",
+                  "the same squares drawn back to front by the painter's algorithm",
+                  SceneOverlappingSquares, painters),
+      SceneFigure(
+          "painters-algorithm-cubes",
+          "Figure 10-10's cubes by the painter: a hidden bottom face sorts in front of a side",
+          SceneTransformedCubes, painters),
+      SceneFigure("fig-12-4-depth-buffer", "the same cubes with the 1/z depth buffer",
+                  SceneTransformedCubes, depth),
+      SceneFigure(
+          "back-face-culling",
+          "the depth buffer with back faces culled: the same picture from half the triangles",
+          SceneTransformedCubes, culled),
+      SceneFigure("outlines",
+                  "the culled, depth-buffered cubes with each triangle's edges outlined",
+                  SceneTransformedCubes, outlines),
+      SceneFigure(
+          "crossing-planes-depth-z",
+          "a floor and a ramp crossing far away, depth-buffered with z: the crossing is wrong",
+          SceneCrossingPlanes, depth_z),
+      SceneFigure("crossing-planes-depth-inverse-z",
+                  "the floor and the ramp depth-buffered with 1/z: a straight crossing",
+                  SceneCrossingPlanes, depth),
+      SceneFigure(
+          "cyclic-overlap-painters",
+          "Figure 12-2, three triangles over one another in a cycle: the painter gets one wrong",
+          SceneCyclicOverlap, painters),
+      SceneFigure("cyclic-overlap-depth-buffer", "the same three triangles with the depth buffer",
+                  SceneCyclicOverlap, depth),
+      SceneFigure("intersecting-painters",
+                  "two triangles passing through each other: the painter draws one over the other",
+                  SceneIntersectingTriangles, painters),
+      SceneFigure("intersecting-depth-buffer", "the same two triangles with the depth buffer",
+                  SceneIntersectingTriangles, depth),
+      SceneFigure("open-box", "an open box: not closed, so nothing is culled and its inside shows",
+                  SceneOpenBox, culled),
+      SceneFigure("open-box-culled",
+                  "the open box culled as if it were closed: its inside faces are missing",
+                  SceneOpenBoxSaidClosed, culled),
   };
 }

@@ -34,6 +34,9 @@ Scene SceneIntersectingTriangles();
 Scene SceneCrossingPlanes();
 // The open box, its opening towards the camera, seen from above.
 Scene SceneOpenBox();
+// The same box with its model said to be closed, which it is not: culling removes its
+// inside faces.
+Scene SceneOpenBoxSaidClosed();
 
 // Every figure this chapter draws.
 std::vector<cgfs::Figure> Figures();

@@ -8,6 +8,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "cgfs/figure.h"
 #include "lighting.h"
 #include "matrices.h"
 #include "projection.h"
@@ -66,3 +67,8 @@ glm::dmat4 MakeTransformMatrix(const Transform& transform);
 // Listing 10-5: world space to camera space: the inverse of the camera's translation,
 // then the inverse of its rotation (a rotation's inverse is its transpose).
 glm::dmat4 MakeCameraMatrix(const Vec3& position, const glm::dmat4& orientation);
+
+// The camera moved as --window or --view asks (cgfs::View): along its own right, up and
+// forward axes (the columns of its orientation), then turned to the left (yaw, about its
+// up axis) and up (pitch, about its right axis).
+Camera MovedCamera(const Camera& camera, const cgfs::View& view);

@@ -1,5 +1,6 @@
 #include "scenes.h"
 
+#include <functional>
 #include <string>
 
 #include "sphere_model.h"
@@ -162,6 +163,19 @@ std::string BookFigureNumber(const Shading& shading) {
   return "";
 }
 
+// A figure of a scene, drawn by RenderScene with `shading`, whose camera --window and
+// --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene, const Shading& shading) {
+  return {name, caption,
+          [scene, shading](Canvas& canvas) { RenderScene(scene(), canvas, shading); },
+          [scene, shading](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            RenderScene(moved, canvas, shading);
+          }};
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures() {
@@ -173,24 +187,21 @@ std::vector<cgfs::Figure> Figures() {
       for (const LightingTerms terms :
            {LightingTerms{true, false}, LightingTerms{false, true}, LightingTerms{true, true}}) {
         const Shading shading{model, normals, terms};
-        figures.push_back(
-            {BookFigureNumber(shading) + NameOf(shading),
-             "the cubes and the sphere, " + NameOf(shading),
-             [shading](Canvas& canvas) { RenderScene(SceneShading(), canvas, shading); }});
+        figures.push_back(SceneFigure(BookFigureNumber(shading) + NameOf(shading),
+                                      "the cubes and the sphere, " + NameOf(shading), SceneShading,
+                                      shading));
       }
     }
   }
   figures.push_back(
-      {"fig-13-7-close-light-gouraud",
-       "a large face lit from close by, Gouraud: the corners are dim, so all is",
-       [](Canvas& canvas) {
-         RenderScene(SceneCloseLight(), canvas, {ShadingModel::kGouraud, NormalSource::kModel, {}});
-       }});
-  figures.push_back({"fig-13-10-close-light-phong",
-                     "the same face, Phong: the bright spot nearest the light",
-                     [](Canvas& canvas) { RenderScene(SceneCloseLight(), canvas); }});
-  figures.push_back({"fig-13-11-raytracer-spheres",
-                     "the ray tracer's spheres and lights rasterized, Phong shading",
-                     [](Canvas& canvas) { RenderScene(SceneRaytracerSpheres(), canvas); }});
+      SceneFigure("fig-13-7-close-light-gouraud",
+                  "a large face lit from close by, Gouraud: the corners are dim, so all is",
+                  SceneCloseLight, {ShadingModel::kGouraud, NormalSource::kModel, {}}));
+  figures.push_back(SceneFigure("fig-13-10-close-light-phong",
+                                "the same face, Phong: the bright spot nearest the light",
+                                SceneCloseLight, {}));
+  figures.push_back(SceneFigure("fig-13-11-raytracer-spheres",
+                                "the ray tracer's spheres and lights rasterized, Phong shading",
+                                SceneRaytracerSpheres, {}));
   return figures;
 }

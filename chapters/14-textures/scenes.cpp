@@ -1,7 +1,9 @@
 #include "scenes.h"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
@@ -168,6 +170,19 @@ Shading WithTexturing(TextureInterpolation interpolation, TextureFilter filter) 
   return shading;
 }
 
+// A figure of a scene, drawn by RenderScene with `shading`, whose camera --window and
+// --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene, const Shading& shading) {
+  return {name, caption,
+          [scene, shading](Canvas& canvas) { RenderScene(scene(), canvas, shading); },
+          [scene, shading](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            RenderScene(moved, canvas, shading);
+          }};
+}
+
 }  // namespace
 
 namespace {
@@ -194,42 +209,36 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
   const auto close_up_texture = CloseUpTexture(settings);
   const auto close_up_crate = std::make_shared<const Model>(TexturedCube(*close_up_texture));
-  const auto crates = [crate, crate_texture](Shading shading) {
-    return [crate, crate_texture, shading](Canvas& canvas) {
-      RenderScene(SceneCrates(*crate), canvas, shading);
-    };
+  const std::function<Scene()> crates = [crate, crate_texture] { return SceneCrates(*crate); };
+  const std::function<Scene()> close_up = [close_up_crate, close_up_texture] {
+    return SceneCrateCloseUp(*close_up_crate);
   };
-  const auto close_up = [close_up_crate, close_up_texture](Shading shading) {
-    return [close_up_crate, close_up_texture, shading](Canvas& canvas) {
-      RenderScene(SceneCrateCloseUp(*close_up_crate), canvas, shading);
-    };
-  };
-  const auto minified = [](Shading shading) {
-    return [shading](Canvas& canvas) { RenderScene(SceneMinifiedCheckerboard(), canvas, shading); };
-  };
+  const std::function<Scene()> minified = SceneMinifiedCheckerboard;
   return {
-      {"fig-14-3-affine",
-       "three crates, u and v interpolated linearly: the textures bend along the diagonals",
-       crates(WithTexturing(kAffine, kNearest))},
-      {"fig-14-5-perspective-correct",
-       "the same crates, u/z and v/z interpolated: straight and in perspective",
-       crates(WithTexturing(kPerspectiveCorrect, kNearest))},
-      {"fig-14-7-close-up-nearest", "a crate up close, nearest texel: blocks",
-       close_up(WithTexturing(kPerspectiveCorrect, kNearest))},
-      {"fig-14-8-close-up-bilinear", "the same crate, bilinear filtering: smooth",
-       close_up(WithTexturing(kPerspectiveCorrect, kBilinear))},
-      {"fig-14-11-minified-nearest",
-       "a one-texel checkerboard made small, nearest texel: noise and patterns, not grey",
-       minified(WithTexturing(kPerspectiveCorrect, kNearest))},
-      {"minified-bilinear", "the same, bilinear: still patterns",
-       minified(WithTexturing(kPerspectiveCorrect, kBilinear))},
-      {"minified-mipmap", "the same, mipmapping: grey, with steps between the levels",
-       minified(WithTexturing(kPerspectiveCorrect, kMipmap))},
-      {"minified-trilinear", "the same, trilinear filtering: grey, no steps",
-       minified(WithTexturing(kPerspectiveCorrect, kTrilinear))},
+      SceneFigure(
+          "fig-14-3-affine",
+          "three crates, u and v interpolated linearly: the textures bend along the diagonals",
+          crates, WithTexturing(kAffine, kNearest)),
+      SceneFigure("fig-14-5-perspective-correct",
+                  "the same crates, u/z and v/z interpolated: straight and in perspective", crates,
+                  WithTexturing(kPerspectiveCorrect, kNearest)),
+      SceneFigure("fig-14-7-close-up-nearest", "a crate up close, nearest texel: blocks", close_up,
+                  WithTexturing(kPerspectiveCorrect, kNearest)),
+      SceneFigure("fig-14-8-close-up-bilinear", "the same crate, bilinear filtering: smooth",
+                  close_up, WithTexturing(kPerspectiveCorrect, kBilinear)),
+      SceneFigure(
+          "fig-14-11-minified-nearest",
+          "a one-texel checkerboard made small, nearest texel: noise and patterns, not grey",
+          minified, WithTexturing(kPerspectiveCorrect, kNearest)),
+      SceneFigure("minified-bilinear", "the same, bilinear: still patterns", minified,
+                  WithTexturing(kPerspectiveCorrect, kBilinear)),
+      SceneFigure("minified-mipmap", "the same, mipmapping: grey, with steps between the levels",
+                  minified, WithTexturing(kPerspectiveCorrect, kMipmap)),
+      SceneFigure("minified-trilinear", "the same, trilinear filtering: grey, no steps", minified,
+                  WithTexturing(kPerspectiveCorrect, kTrilinear)),
       {"fig-14-12-mip-chain", "the crate texture and its mipmaps, each half the one before",
        [crate_texture](Canvas& canvas) { DrawMipChain(*crate_texture, canvas); }},
-      {"crates-trilinear", "the crates with everything: perspective-correct, trilinear",
-       crates(Shading{})},
+      SceneFigure("crates-trilinear", "the crates with everything: perspective-correct, trilinear",
+                  crates, Shading{}),
   };
 }

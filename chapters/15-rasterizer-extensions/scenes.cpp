@@ -1,7 +1,9 @@
 #include "scenes.h"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -296,26 +298,45 @@ Extensions With(const Change& change) {
   return extensions;
 }
 
+// A figure of a scene, drawn by `render`, whose camera --window and --view can move.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene,
+                         std::function<void(const Scene&, Canvas&)> render) {
+  return {name, caption, [scene, render](Canvas& canvas) { render(scene(), canvas); },
+          [scene, render](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            render(moved, canvas);
+          }};
+}
+
+// The same, drawn by RenderScene with `extensions`.
+cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
+                         std::function<Scene()> scene, const Extensions& extensions) {
+  return SceneFigure(name, caption, std::move(scene),
+                     [extensions](const Scene& shown, Canvas& canvas) {
+                       RenderScene(shown, canvas, {}, extensions);
+                     });
+}
+
 }  // namespace
 
 namespace {
 
 // "Normal Mapping": Figures 15-1 and 15-2.
 std::vector<cgfs::Figure> NormalMapFigures() {
-  const auto draw_square = [](bool light_from_left, bool normal_mapping) {
-    return [=](Canvas& canvas) {
-      RenderScene(SceneNormalMappedSquare(light_from_left), canvas, {},
-                  With([=](Extensions& e) { e.normal_mapping = normal_mapping; }));
-    };
+  const auto square = [](bool light_from_left) {
+    return [light_from_left] { return SceneNormalMappedSquare(light_from_left); };
   };
+  const Extensions mapped = With([](Extensions& e) { e.normal_mapping = true; });
   return {
-      {"fig-15-1a-textured-square", "a square of stone tiles lit from the left: flat",
-       draw_square(true, false)},
-      {"fig-15-1b-normal-map-lit-from-left",
-       "the same square with a normal map: diamond bumps, lit on their left faces",
-       draw_square(true, true)},
-      {"fig-15-1c-normal-map-lit-from-right", "the same, lit from the right: the other faces",
-       draw_square(false, true)},
+      SceneFigure("fig-15-1a-textured-square", "a square of stone tiles lit from the left: flat",
+                  square(true), Extensions{}),
+      SceneFigure("fig-15-1b-normal-map-lit-from-left",
+                  "the same square with a normal map: diamond bumps, lit on their left faces",
+                  square(true), mapped),
+      SceneFigure("fig-15-1c-normal-map-lit-from-right",
+                  "the same, lit from the right: the other faces", square(false), mapped),
       {"fig-15-2-normal-map", "the normal map of figure 15-1 as an RGB texture: blue-purple",
        [](Canvas& canvas) { DrawTexture(DiamondNormalMap(), canvas); }},
   };
@@ -324,57 +345,61 @@ std::vector<cgfs::Figure> NormalMapFigures() {
 // "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
 // one light without shadows, with stencil shadows and with shadow maps.
 std::vector<cgfs::Figure> ShadowFigures() {
-  const auto draw = [](Scene (*scene)(), Extensions extensions) {
-    return [scene, extensions](Canvas& canvas) { RenderScene(scene(), canvas, {}, extensions); };
-  };
   const auto one_light = [](std::size_t k) {
-    return [k](Canvas& canvas) {
+    return [k] {
       Scene scene = SceneShading();
       scene.lights = {scene.lights[k]};
-      RenderScene(scene, canvas);
+      return scene;
     };
   };
   const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
   const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
+  const auto volume_edges = [volumes](const Scene& scene, Canvas& canvas) {
+    RenderScene(scene, canvas, {}, volumes);
+    DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
+  };
   return {
-      {"fig-15-3a-ambient-pass", "chapter 13's scene lit by its ambient light alone", one_light(0)},
-      {"fig-15-3b-directional-pass", "lit by its directional light alone", one_light(1)},
-      {"fig-15-3c-point-pass", "lit by its point light alone", one_light(2)},
-      {"fig-15-3d-sum-of-passes", "the three passes added up, clamped once: as one pass",
-       draw(SceneShading, With([](Extensions& e) { e.multipass_lighting = true; }))},
-      {"fig-15-4-shadow-volume",
-       "a cube's shadow volume for a point light, its edges down to the floor: the shadow",
-       [volumes](Canvas& canvas) {
-         const Scene scene = SceneCubeOverFloor();
-         RenderScene(scene, canvas, {}, volumes);
-         DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
-       }},
-      {"no-shadows", "chapter 13's objects over a floor, lit from above left, no shadows",
-       draw(SceneShadows, {})},
-      {"stencil-shadows", "the same with stencil shadows (depth fail)",
-       draw(SceneShadows, volumes)},
-      {"shadow-map", "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
-       draw(SceneShadows, maps)},
-      {"shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
-       draw(SceneShadows, With([](Extensions& e) {
-              e.shadows = Shadows::kShadowMaps;
-              e.shadow_mapping.percentage_closer_filtering = true;
-            }))},
-      {"camera-in-shadow-depth-fail", "the camera inside a shadow volume: depth fail counts right",
-       draw(SceneCameraInShadow, volumes)},
-      {"camera-in-shadow-depth-pass",
-       "the same counted in front of the surface (depth pass): shadow and light swapped",
-       draw(SceneCameraInShadow, With([](Extensions& e) {
-              e.shadows = Shadows::kShadowVolumes;
-              e.shadow_volume_counting = ShadowVolumeCounting::kDepthPass;
-            }))},
-      {"shadow-map-directional",
-       "a directional light's shadows from one orthographic 512 x 512 map, filtered",
-       draw(SceneShadowsDirectional, With([](Extensions& e) {
-              e.shadows = Shadows::kShadowMaps;
-              e.shadow_mapping.size = 512;
-              e.shadow_mapping.percentage_closer_filtering = true;
-            }))},
+      SceneFigure("fig-15-3a-ambient-pass", "chapter 13's scene lit by its ambient light alone",
+                  one_light(0), Extensions{}),
+      SceneFigure("fig-15-3b-directional-pass", "lit by its directional light alone", one_light(1),
+                  Extensions{}),
+      SceneFigure("fig-15-3c-point-pass", "lit by its point light alone", one_light(2),
+                  Extensions{}),
+      SceneFigure("fig-15-3d-sum-of-passes", "the three passes added up, clamped once: as one pass",
+                  SceneShading, With([](Extensions& e) { e.multipass_lighting = true; })),
+      SceneFigure(
+          "fig-15-4-shadow-volume",
+          "a cube's shadow volume for a point light, its edges down to the floor: the shadow",
+          SceneCubeOverFloor, volume_edges),
+      SceneFigure("no-shadows",
+                  "chapter 13's objects over a floor, lit from above left, no shadows",
+                  SceneShadows, Extensions{}),
+      SceneFigure("stencil-shadows", "the same with stencil shadows (depth fail)", SceneShadows,
+                  volumes),
+      SceneFigure("shadow-map",
+                  "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
+                  SceneShadows, maps),
+      SceneFigure("shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
+                  SceneShadows, With([](Extensions& e) {
+                    e.shadows = Shadows::kShadowMaps;
+                    e.shadow_mapping.percentage_closer_filtering = true;
+                  })),
+      SceneFigure("camera-in-shadow-depth-fail",
+                  "the camera inside a shadow volume: depth fail counts right", SceneCameraInShadow,
+                  volumes),
+      SceneFigure("camera-in-shadow-depth-pass",
+                  "the same counted in front of the surface (depth pass): shadow and light swapped",
+                  SceneCameraInShadow, With([](Extensions& e) {
+                    e.shadows = Shadows::kShadowVolumes;
+                    e.shadow_volume_counting = ShadowVolumeCounting::kDepthPass;
+                  })),
+      SceneFigure("shadow-map-directional",
+                  "a directional light's shadows from one orthographic 512 x 512 map, filtered",
+                  SceneShadowsDirectional, With([](Extensions& e) {
+                    e.shadows = Shadows::kShadowMaps;
+                    e.shadow_mapping.size = 512;
+                    e.shadow_mapping.percentage_closer_filtering = true;
+                  })),
   };
 }
 
@@ -383,30 +408,29 @@ std::vector<cgfs::Figure> ShadowFigures() {
 std::vector<cgfs::Figure> EnvironmentFigures(const ChapterSettings& settings) {
   const auto crate_texture = CrateTexture(settings);
   const auto crate = std::make_shared<const Model>(TexturedCube(*crate_texture));
-  const auto draw_crates = [crate, crate_texture](Scene (*scene)(const Model&),
-                                                  Extensions extensions) {
-    return [crate, crate_texture, scene, extensions](Canvas& canvas) {
-      RenderScene(scene(*crate), canvas, {}, extensions);
-    };
+  const auto crates = [crate, crate_texture](Scene (*scene)(const Model&)) {
+    return [crate, crate_texture, scene] { return scene(*crate); };
   };
   return {
-      {"environment-map",
-       "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
-       draw_crates(SceneMirrorSphere, With([](Extensions& e) { e.environment_mapping = true; }))},
+      SceneFigure(
+          "environment-map",
+          "a mirror sphere among the crates, reflecting a cube map rendered from its centre",
+          crates(SceneMirrorSphere), With([](Extensions& e) { e.environment_mapping = true; })),
       {"cube-map", "that cube map unfolded: +Y; -X, +Z, +X, -Z; -Y",
        [crate, crate_texture](Canvas& canvas) {
          const Scene scene = SceneMirrorSphere(*crate);
          DrawCubeMap(RenderCubeMap(scene, scene.instances.back().transform.translation, 150),
                      canvas);
        }},
-      {"everything",
-       "textures, a normal-mapped floor, a mirror sphere and filtered shadow maps at once",
-       draw_crates(SceneEverything, With([](Extensions& e) {
-                     e.normal_mapping = true;
-                     e.environment_mapping = true;
-                     e.shadows = Shadows::kShadowMaps;
-                     e.shadow_mapping.percentage_closer_filtering = true;
-                   }))},
+      SceneFigure(
+          "everything",
+          "textures, a normal-mapped floor, a mirror sphere and filtered shadow maps at once",
+          crates(SceneEverything), With([](Extensions& e) {
+            e.normal_mapping = true;
+            e.environment_mapping = true;
+            e.shadows = Shadows::kShadowMaps;
+            e.shadow_mapping.percentage_closer_filtering = true;
+          })),
   };
 }
 

@@ -3,6 +3,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "cgfs/figure.h"
+
 // The card's image is 512 × 512; other sizes see the same view (the pixel step
 // scales with the width).
 inline constexpr int kCardSide = 512;
@@ -13,6 +15,7 @@ inline constexpr glm::dvec3 kEye{17, 16, 8};
 inline constexpr double kFocus = 16;
 
 struct Camera {
+  glm::dvec3 eye = kEye;
   glm::dvec3 g;  // the viewing direction, normalize(−6, −16, 0): level, towards the letters
   glm::dvec3 a;  // one pixel along the image's x: towards the image's left (+x in the world)
   glm::dvec3 b;  // one pixel along the image's y: up, (0, 0, 0.002)
@@ -22,5 +25,7 @@ struct Camera {
 };
 
 // The card's vectors for an image of width × height: at 512 × 512, a = normalize(up × g)
-// · 0.002, b = normalize(g × a) · 0.002, c = −256·(a + b) + g, aperture 99.
-Camera MakeCamera(int width, int height);
+// · 0.002, b = normalize(g × a) · 0.002, c = −256·(a + b) + g, aperture 99. From `view`
+// (--window, --view): the eye moved along the image's right (−a), up (b) and forward
+// (g), then g, a and b turned to the left (yaw, about b) and up (pitch, about a).
+Camera MakeCamera(int width, int height, const cgfs::View& view = {});

@@ -133,17 +133,17 @@ glm::ivec3 RenderPixel(const Camera& camera, int x, int y, const RenderSettings&
     if (u.has_light) {
       random.Preset(u.light_x, u.light_y);
     }
-    p = Sample(kEye + t, direction, random, settings.optimizations.bound) * weight + p;
+    p = Sample(camera.eye + t, direction, random, settings.optimizations.bound) * weight + p;
     random.ClearPreset();
   }
   // The card prints (int)p: truncation. Clamping is ours.
   return glm::clamp(glm::ivec3(p), glm::ivec3(0), glm::ivec3(255));
 }
 
-void Render(cgfs::Canvas& canvas, const RenderSettings& settings) {
+void Render(cgfs::Canvas& canvas, const RenderSettings& settings, const cgfs::View& view) {
   const int width = canvas.Width();
   const int height = canvas.Height();
-  const Camera camera = MakeCamera(width, height);
+  const Camera camera = MakeCamera(width, height, view);
   ForEachTile(width, height, settings.optimizations.threads, [&](const Tile& tile) {
     for (int cy = tile.y_begin; cy < tile.y_end; ++cy) {
       for (int cx = tile.x_begin; cx < tile.x_end; ++cx) {

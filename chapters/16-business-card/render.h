@@ -40,5 +40,6 @@ struct RenderSettings {
 glm::ivec3 RenderPixel(const Camera& camera, int x, int y, const RenderSettings& settings);
 
 // Draws the card on the canvas: every pixel of it, each from its own generator
-// (random.h), on the threads the settings ask for. Reports its progress.
-void Render(cgfs::Canvas& canvas, const RenderSettings& settings);
+// (random.h), on the threads the settings ask for, from the card's eye moved as `view`
+// asks (MakeCamera). Reports its progress.
+void Render(cgfs::Canvas& canvas, const RenderSettings& settings, const cgfs::View& view = {});

@@ -79,6 +79,28 @@ TEST_CASE("MakeCameraMatrix: the camera matrix of figure 10-10, by its action on
   CheckNear(cgfs::ToCartesian(M * Point4({-3, 1, 2})), {0, 0, 0});
 }
 
+TEST_CASE("MovedCamera: along the camera's own axes, then turned left and up", "[transform]") {
+  const Camera straight;  // at the origin, looking down +z
+  const auto forward = [](const Camera& camera) {
+    return Vec3(camera.orientation * glm::dvec4(0, 0, 1, 0));
+  };
+  // Turned 90 degrees to the left the camera looks down -x; 90 degrees up, down +y.
+  CheckNear(forward(MovedCamera(straight, {{0, 0, 0}, 90, 0})), {-1, 0, 0});
+  CheckNear(forward(MovedCamera(straight, {{0, 0, 0}, 0, 90})), {0, 1, 0});
+  // Figure 10-10's camera at (-3, 1, 2), turned 30 degrees to the right, looks along
+  // (sin 30, 0, cos 30); its right is (cos 30, 0, -sin 30) and its up +y.
+  const Camera turned = SceneTransformedCubes().camera;
+  CheckNear(MovedCamera(turned, {{0, 0, 1}, 0, 0}).position, {-2.5, 1, 2.866025});
+  CheckNear(MovedCamera(turned, {{1, 0, 0}, 0, 0}).position, {-2.133975, 1, 1.5});
+  CheckNear(MovedCamera(turned, {{0, 1, 0}, 0, 0}).position, {-3, 2, 2});
+  // Turning 30 degrees to the left undoes the figure's turn: it looks down +z again.
+  CheckNear(forward(MovedCamera(turned, {{0, 0, 0}, 30, 0})), {0, 0, 1});
+  // No view, the camera itself.
+  const Camera same = MovedCamera(turned, {});
+  CHECK(same.position == turned.position);
+  CHECK(same.orientation == turned.orientation);
+}
+
 TEST_CASE("instance A of figure 10-10: composite matrix and vertices", "[transform]") {
   const Scene scene = SceneTransformedCubes();
   const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *

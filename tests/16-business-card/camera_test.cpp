@@ -32,6 +32,27 @@ TEST_CASE("MakeCamera: another size sees the same view through the same lens", "
   CHECK(small.aperture * glm::length(small.a) == Approx(card.aperture * glm::length(card.a)));
 }
 
+TEST_CASE("MakeCamera from a view: the eye moved along the image's axes, then turned", "[camera]") {
+  const Camera card = MakeCamera(512, 512);
+  CHECK(card.eye == kEye);
+  // The image's right is -a normalised, (-0.936329, 0.351123, 0); its up +z; its
+  // forward g.
+  CheckNear(MakeCamera(512, 512, {{1, 0, 0}, 0, 0}).eye, kEye + glm::dvec3(-0.936329, 0.351123, 0));
+  CheckNear(MakeCamera(512, 512, {{0, 1, 0}, 0, 0}).eye, kEye + glm::dvec3(0, 0, 1));
+  CheckNear(MakeCamera(512, 512, {{0, 0, 2}, 0, 0}).eye, kEye + card.g * 2.0);
+  // Turned 90 degrees to the left, it looks along a (the image's left) and its a points
+  // back; 90 degrees up, it looks along b, straight up.
+  const Camera left = MakeCamera(512, 512, {{0, 0, 0}, 90, 0});
+  CheckNear(left.g, glm::normalize(card.a), 1e-12);
+  CheckNear(left.a, -card.g * 0.002, 1e-12);
+  CheckNear(MakeCamera(512, 512, {{0, 0, 0}, 0, 90}).g, {0, 0, 1}, 1e-12);
+  // Turning keeps the middle pixel's ray on g, and the pixel steps at right angles.
+  const Camera turned = MakeCamera(512, 512, {{0, 0, 0}, 30, -20});
+  CheckNear(turned.a * 256.0 + turned.b * 256.0 + turned.c, turned.g, 1e-12);
+  CHECK(glm::dot(turned.a, turned.b) == Approx(0).margin(1e-15));
+  CHECK(glm::length(turned.g) == Approx(1));
+}
+
 TEST_CASE("Random: every pixel has its own numbers, the same every time", "[random]") {
   Random a(1, 10, 20), again(1, 10, 20), right(1, 11, 20), above(1, 10, 21), other(2, 10, 20);
   double sum = 0;
