@@ -8,13 +8,6 @@
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
 
-const Color& Texture::At(int i, int j) const {
-  i = std::clamp(i, 0, width - 1);
-  j = std::clamp(j, 0, height - 1);
-  return texels[static_cast<std::size_t>(j) * static_cast<std::size_t>(width) +
-                static_cast<std::size_t>(i)];
-}
-
 Texture TextureFromImage(const cgfs::Image& image) {
   Texture texture{image.Width(), image.Height(), {}};
   texture.texels.reserve(static_cast<std::size_t>(image.Width()) *
