@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
@@ -177,6 +178,23 @@ void Save(const Figure& figure, const Shown& shown, const std::filesystem::path&
   std::cout << std::endl;
 }
 
+// How far the mouse was dragged (left button held): this motion and every one already
+// queued behind it, so that one frame follows however many motions came while the last
+// frame was drawn.
+std::pair<int, int> DragSoFar(const SDL_MouseMotionEvent& first) {
+  int right = first.xrel;
+  int down = first.yrel;
+  SDL_PumpEvents();
+  SDL_Event next;
+  while (SDL_PeepEvents(&next, 1, SDL_GETEVENT, SDL_MOUSEMOTION, SDL_MOUSEMOTION) == 1) {
+    if ((next.motion.state & SDL_BUTTON_LMASK) != 0) {
+      right += next.motion.xrel;
+      down += next.motion.yrel;
+    }
+  }
+  return {right, down};
+}
+
 // The window's state: the figure shown, from which view, drawn how.
 class Session {
  public:
@@ -206,6 +224,15 @@ class Session {
   void Present() { cgfs::Present(sdl_, chapter_, *figures_[index_], shown_, view_); }
   bool Preview() const { return shown_.preview; }
   std::size_t Index() const { return index_; }
+
+  // Dragging the mouse: the camera turns with it, `right` and `down` pixels.
+  void Drag(int right, int down) {
+    if (figures_[index_]->draw_from && (right != 0 || down != 0)) {
+      view_.yaw -= right * kWindowMouseTurn;
+      view_.pitch -= down * kWindowMouseTurn;
+      Show(index_, true);
+    }
+  }
 
   // What a key does; false when it closes the window.
   bool Press(SDL_Keycode key, const std::filesystem::path& output, const std::string& format) {
@@ -284,6 +311,10 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
     }
     if (event.type == SDL_KEYDOWN && !session.Press(event.key.keysym.sym, output, format)) {
       return;
+    }
+    if (event.type == SDL_MOUSEMOTION && (event.motion.state & SDL_BUTTON_LMASK) != 0) {
+      const auto [right, down] = DragSoFar(event.motion);
+      session.Drag(right, down);
     }
   }
 }

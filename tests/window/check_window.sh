@@ -4,8 +4,8 @@
 # for byte its golden image; Right shows the second (or the only one again), whose
 # saved file is its golden image too; the title names the chapter, the figure and the drawing's time. With a
 # CAMERA_FIGURE (a figure whose camera moves), the window then shows that figure and
-# moves its camera forward twice and turns it left once (Up Up Q): the view it prints
-# is 0,0,0.5,5,0, and the figure it saves is byte for byte what the program draws for
+# moves its camera forward twice, turns it left twice (Up Up Q Q) and back to the right
+# by dragging the mouse 20 pixels: the view it prints is 0,0,0.5,5,0, and the figure it saves is byte for byte what the program draws for
 # that view (--view), and not the unmoved one. Esc closes the window, exit status 0.
 # Without a display --window says so in one line, exit status 2. Leaves screenshots in
 # WORK_DIR. Skipped without Xvfb and xdotool (CI installs them: scripts/setup).
@@ -81,11 +81,15 @@ if [ -n "$camera" ]; then
   # From the second figure, Right reaches the camera figure (the third, or the first
   # again), unless the camera figure is the second.
   [ "$camera" = "${names[1]}" ] || xdotool key Right
-  xdotool key Up Up q s
+  # Forward twice, turned 10 degrees left with Q Q, then 5 back to the right by
+  # dragging the mouse 20 pixels to the right, the left button held.
+  xdotool key Up Up q q
+  xdotool mousemove --window "$window" 300 300 mousedown 1 mousemove_relative -- 20 0 mouseup 1
+  xdotool key s
   if saved "$camera.png"; then
     view=$(grep -o -- "saved .*/$camera.png (--view [^)]*" "$work/window.txt" | tail -1 | sed 's/.*--view //')
     echo "the window's view: $view"
-    [ "$view" = "0,0,0.5,5,0" ] || fail "the view after Up Up Q is $view, not 0,0,0.5,5,0"
+    [ "$view" = "0,0,0.5,5,0" ] || fail "the view after Up Up Q Q and the drag is $view, not 0,0,0.5,5,0"
     "$program" --figure "$camera" --view "$view" --output "$work/drawn" >/dev/null
     cmp -s "$work/saved/$camera.png" "$work/drawn/$camera.png" \
       && echo "ok: the moved window's $camera is what --view $view draws" \

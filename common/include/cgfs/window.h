@@ -14,12 +14,14 @@ namespace cgfs {
 inline constexpr char kWindowKeys[] =
     "keys: Left / Right the previous / next figure, S save it, R back to the chapter's view, "
     "H or F1 these keys, Esc quit; where the figure has a camera: Up / Down forward / back, "
-    "A / D left / right, PageUp / PageDown up / down, Q / E turn left / right, "
-    "Home / End look up / down";
+    "A / D left / right, PageUp / PageDown up / down, Q / E or dragging the mouse turn "
+    "left / right, Home / End or dragging the mouse look up / down";
 
 // How far one key press moves the camera (scene units) or turns it (degrees).
 inline constexpr double kWindowStep = 0.25;
 inline constexpr double kWindowTurn = 5;
+// How far dragging the mouse (left button held) turns it: degrees per pixel.
+inline constexpr double kWindowMouseTurn = 0.25;
 // While the camera moves, frames are drawn at half size; the full one once no key has
 // come for this many milliseconds.
 inline constexpr int kWindowSettle = 150;
