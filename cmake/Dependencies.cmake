@@ -38,4 +38,8 @@ endif()
 if(CGFS_BUILD_TESTS)
   find_package(Catch2 2 QUIET CONFIG)
   cgfs_require_package(Catch2_FOUND catch2 "Catch2 v2")
+  # The function cases (tests/cases/*.json), which the equation tests share with the
+  # runners for other languages (tools/check-functions).
+  find_package(nlohmann_json 3 QUIET CONFIG)
+  cgfs_require_package(nlohmann_json_FOUND nlohmann-json3-dev "nlohmann/json")
 endif()
