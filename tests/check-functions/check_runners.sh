@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# The runners for other languages (tools/check-functions), as a student uses them:
+# our Python and JavaScript references of each chapter pass every case; a copy of a
+# reference with mistakes gets, per function, the failed case with what it catches, a
+# function that raises or never returns or returns the wrong type one line each, a
+# missing function "not written yet"; a module that does not load one line and exit 1,
+# a wrong chapter one line and exit 2; the student's folder is left as it was. And
+# every function of every case file is read by a C++ test (one set of cases for both).
+# Skipped without python3 or node (CI installs them: scripts/setup).
+# Usage: check_runners.sh SOURCE_DIR WORK_DIR
+set -euo pipefail
+source_dir=$1 work=$2
+rm -rf "$work"
+mkdir -p "$work"
+failed=0
+check() {  # description, then a command that must succeed
+  local what=$1
+  shift
+  if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; failed=1; fi
+}
+says() { grep -qE -- "$1" "$work/out.txt"; }
+python_runner=$source_dir/tools/check-functions/python/check-functions.py
+js_runner=$source_dir/tools/check-functions/js/check-functions.js
+
+echo "== every function of every case file is read by a C++ test"
+for cases in "$source_dir"/tests/cases/*.json; do
+  file=$(basename "$cases")
+  for function in $(grep -o '"function": "[A-Za-z]*"' "$cases" | cut -d'"' -f4); do
+    check "$file: $function is read by a C++ test" \
+      grep -rqF "CasesOf(\"$file\", \"$function\")" "$source_dir/tests"
+  done
+done
+
+run() {  # runs a runner into out.txt (stdout and stderr), its status in $status
+  status=0
+  "$@" >"$work/out.txt" 2>&1 || status=$?
+  sed 's/^/    /' "$work/out.txt"
+}
+
+if command -v python3 >/dev/null; then
+  echo "== Python: the references pass"
+  for reference in "$source_dir"/tools/check-functions/python/reference/*.py; do
+    chapter=$(grep -o '^# cases: [0-9][0-9]' "$reference" | cut -d' ' -f3)
+    run python3 "$python_runner" "$chapter" "$reference"
+    check "$(basename "$reference"): exit status 0" test $status -eq 0
+    check "$(basename "$reference"): every function passed" bash -c '! grep -qE "FAILED|not written" "$1"' _ "$work/out.txt"
+  done
+
+  echo "== Python: a student's chapter 2 with mistakes"
+  student=$work/python-student
+  mkdir -p "$student"
+  sed -e 's|y \* Vh / Ch|y * Vh / Cw|' \
+      -e 's|^def IntersectRaySphere(|def IntersectRaySphereNotYet(|' \
+      -e 's|^def TraceRay(O, D, t_min, t_max):|def TraceRay(O, D, t_min, t_max):\n    if t_min > 6:\n        while True:\n            pass\n    if t_max == 4:\n        raise ValueError("oops")\n    if t_max < 4:\n        return "white"\n    return TraceRayBook(O, D, t_min, t_max)\n\n\ndef TraceRayBook(O, D, t_min, t_max):|' \
+      -e 's|IntersectRaySphere(O, D, sphere)$|IntersectRaySphereNotYet(O, D, sphere)|' \
+      "$source_dir/tools/check-functions/python/reference/basic_rays.py" >"$student/mine.py"
+  before=$(ls -AR "$student")
+  run python3 "$python_runner" 02 "$student/mine.py" --time-limit 0.3
+  check "mistakes: exit status 1" test $status -eq 1
+  check "the failed case is named with what it catches" \
+    says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
+  check "with what was expected and what it returned" \
+    says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
+  check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
+  check "a case that never returns" says "^      did not return within 0.3 s"
+  check "a case that raises, at the student's line" says "^      raised ValueError: oops \(at mine.py:[0-9]+\)"
+  check "a result of the wrong type" says "^      returned 'white', not a color"
+  check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"
+  echo "import no_such_module" >"$student/broken.py"
+  run python3 "$python_runner" 02 "$student/broken.py"
+  check "a module that does not load: exit status 1, one line" \
+    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
+  check "it names the error and the line" says "does not load: ModuleNotFoundError: .* \(at broken.py:1\)"
+  run python3 "$python_runner" 99 "$student/mine.py"
+  check "a chapter without cases: exit status 2, one line" \
+    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+else
+  echo "SKIPPED: no python3 to run the Python runner (CI installs it: scripts/setup)"
+fi
+
+if command -v node >/dev/null; then
+  echo "== JavaScript: the references pass"
+  for reference in "$source_dir"/tools/check-functions/js/reference/*.js; do
+    [[ $reference != *-adapter.js ]] || continue
+    chapter=$(grep -o '^// cases: [0-9][0-9]' "$reference" | cut -d' ' -f3)
+    run node "$js_runner" "$chapter" "$reference" --adapter "${reference%.js}-adapter.js"
+    check "$(basename "$reference"): exit status 0" test $status -eq 0
+    check "$(basename "$reference"): every function passed" bash -c '! grep -qE "FAILED|not written" "$1"' _ "$work/out.txt"
+  done
+
+  echo "== JavaScript: a student's chapter 2 with mistakes"
+  student=$work/js-student
+  mkdir -p "$student"
+  cp "$source_dir/tools/check-functions/js/reference/basic-rays-adapter.js" "$student/"
+  sed -e 's|y \* Vh / Ch|y * Vh / Cw|' \
+      -e 's|^function TraceRay(O, D, t_min, t_max) {|&\n  if (t_min > 6) for (;;) {}\n  if (t_max === 4) throw new RangeError("oops");\n  if (t_max < 4) return "white";|' \
+      -e 's|IntersectRaySphere, TraceRay };|TraceRay };|' \
+      "$source_dir/tools/check-functions/js/reference/basic-rays.js" >"$student/basic-rays.js"
+  before=$(ls -AR "$student")
+  run node "$js_runner" 02 "$student/basic-rays.js" --adapter "$student/basic-rays-adapter.js" --time-limit 0.3
+  check "mistakes: exit status 1" test $status -eq 1
+  check "the failed case is named with what it catches" \
+    says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
+  check "with what was expected and what it returned" \
+    says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
+  check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
+  check "a case that never returns" says "^      did not return within 0.3 s"
+  check "a case that throws, at the student's line" says "^      threw RangeError: oops \(at basic-rays.js:[0-9]+"
+  check "a result of the wrong type" says '^      returned "white", not a color'
+  check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"
+  echo 'throw new Error("at load")' >"$student/broken.js"
+  run node "$js_runner" 02 "$student/broken.js"
+  check "a module that does not load: exit status 1, one line" \
+    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
+  run node "$js_runner" 99 "$student/basic-rays.js"
+  check "a chapter without cases: exit status 2, one line" \
+    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+else
+  echo "SKIPPED: no node to run the JavaScript runner (CI installs nodejs: scripts/setup)"
+fi
+[ $failed -eq 0 ] && echo "PASS: the runners check functions as documented"
+exit $failed

@@ -1,0 +1,267 @@
+#!/usr/bin/env node
+// Checks a JavaScript chapter of "Computer Graphics from Scratch" one book function at a
+// time (Node 18 or newer, no packages):
+//
+//     node check-functions.js CHAPTER your-module.js [--adapter your-adapter.js] [--time-limit S]
+//
+// CHAPTER is a chapter's number or folder name (02, 02-basic-rays). For every book
+// function of the chapter that has cases in tests/cases/CHAPTER.json (the cases our C++
+// tests run), the runner calls your module's export of the book's name with the book's
+// parameters and prints whether it passed, failed (with the inputs, what was expected,
+// what yours returned and the mistake the case catches) or is not written yet.
+//
+// The book's data reach your code as the default adapter below makes them: vectors and
+// colours as arrays [x, y, z], spheres and lights as objects with the book's fields
+// (sphere.center, light.type === "point"), and the book's globals (Cw, Ch, Vw, Vh, d,
+// scene, BACKGROUND_COLOR) set on globalThis before each case. An adapter module of
+// yours may export any of the default adapter's functions to build your own types, or
+// to hand the globals to your module (docs/students.md has an example).
+//
+// Each case runs in a worker thread, so that one that never returns is stopped after
+// the time limit (default 5 s). Exit status: 0 every case of every written function
+// passed, 1 a case failed or your module does not load, 2 the command line is wrong.
+// Nothing is written anywhere.
+"use strict";
+
+const fs = require("fs");
+const path = require("path");
+const { pathToFileURL } = require("url");
+const { Worker, isMainThread, parentPort, workerData } = require("worker_threads");
+
+const CASES_DIR = path.resolve(__dirname, "..", "..", "..", "tests", "cases");
+
+function number(value) {
+  if (value === "inf") return Infinity;
+  if (value === "-inf") return -Infinity;
+  return Number(value);
+}
+
+const numbers = (value) => value.map(number);
+
+const defaultAdapter = {
+  vector: (value) => numbers(value),
+  color: (value) => numbers(value),
+  sphere(value, adapter) {
+    return {
+      center: adapter.vector(value.center), radius: number(value.radius),
+      color: adapter.color(value.color), specular: number(value.specular ?? -1),
+      reflective: number(value.reflective ?? 0),
+    };
+  },
+  light(value, adapter) {
+    return {
+      type: value.type, intensity: number(value.intensity),
+      position: adapter.vector(value.position ?? [0, 0, 0]),
+      direction: adapter.vector(value.direction ?? [0, 0, 0]),
+    };
+  },
+  scene(value, adapter) {
+    return {
+      spheres: (value.spheres ?? []).map((each) => adapter.sphere(each, adapter)),
+      lights: (value.lights ?? []).map((each) => adapter.light(each, adapter)),
+      background_color: adapter.color(value.background_color ?? [255, 255, 255]),
+    };
+  },
+  // Sets the book's globals that a case gives.
+  setup(module, given, adapter) {
+    if (given.canvas) [globalThis.Cw, globalThis.Ch] = [given.canvas.width, given.canvas.height];
+    if (given.viewport) {
+      [globalThis.Vw, globalThis.Vh] = [number(given.viewport.width), number(given.viewport.height)];
+      globalThis.d = number(given.viewport.d);
+    }
+    if (given.scene) {
+      globalThis.scene = adapter.scene(given.scene, adapter);
+      globalThis.BACKGROUND_COLOR = globalThis.scene.background_color;
+    }
+  },
+  // Your function's result as the list of numbers the case expects.
+  result(kind, value) {
+    if (kind === "number") return [Number(value)];
+    if (value && ["x", "y", "z"].every((axis) => axis in value)) value = [value.x, value.y, value.z];
+    if (!value || typeof value[Symbol.iterator] !== "function") throw new TypeError("not a list");
+    return Array.from(value, (each) => {
+      if (typeof each !== "number") throw new TypeError("not a number");
+      return each;
+    });
+  },
+};
+
+class Usage extends Error {}
+
+// An error in one line, at the last line of the student's code it went through.
+function where(error) {
+  if (!(error instanceof Error)) return `${typeof error} ${String(error)}`;
+  const line = (error.stack ?? "").split("\n").find((each) => /at .*:\d+:\d+\)?$/.test(each) &&
+    !each.includes(__filename) && !each.includes("node:"));
+  const place = line ? ` (at ${path.basename(line.replace(/^.*\(|^\s*at /g, "").replace(/:\d+\)?$/, ""))})` : "";
+  return `${error.name}: ${String(error.message).split("\n")[0]}${place}`;
+}
+
+async function load(file, what) {
+  try {
+    const loaded = await import(pathToFileURL(path.resolve(file)).href);
+    return loaded.default && typeof loaded.default === "object" ? { ...loaded.default, ...loaded } : loaded;
+  } catch (error) {
+    throw Object.assign(new Error(`${what} ${file} does not load: ${where(error)}`), { load: true });
+  }
+}
+
+const shown = (values) => `[${values.map((v) => Number.isFinite(v) ? +v.toPrecision(10) : v).join(", ")}]`;
+
+// null when the case passes, else what went wrong, in one line.
+function runCase(entry, kase, adapter, module) {
+  let args;
+  try {
+    adapter.setup(module, kase.given ?? {}, adapter);
+    args = entry.parameters.map(([name, kind]) =>
+      kind === "number" ? number(kase.args[name]) : adapter[kind](kase.args[name], adapter));
+  } catch (error) {
+    return `your adapter failed to build the inputs: ${where(error)}`;
+  }
+  let value;
+  try {
+    value = module[entry.function](...args);
+  } catch (error) {
+    return `threw ${where(error)}`;
+  }
+  let actual;
+  try {
+    actual = adapter.result(entry.returns, value);
+  } catch {
+    return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
+  }
+  const expected = Array.isArray(kase.expected) ? numbers(kase.expected) : [number(kase.expected)];
+  const tolerance = kase.tolerance;
+  const near = (a, e) => (Number.isFinite(e) ? Math.abs(a - e) <= tolerance : a === e);
+  if (actual.length === expected.length && actual.every((a, i) => near(a, expected[i]))) return null;
+  return `returned ${shown(actual)}, expected ${shown(expected)}${tolerance ? ` (within ${tolerance})` : ""}`;
+}
+
+// The worker: loads the module and the adapter, runs the cases from `start` on, and
+// posts each verdict.
+async function work() {
+  const { file, module: modulePath, adapter: adapterPath, start } = workerData;
+  const cases = JSON.parse(fs.readFileSync(file, "utf8"));
+  let module, adapter;
+  try {
+    const own = adapterPath ? await load(adapterPath, "your adapter") : {};
+    adapter = { ...defaultAdapter, ...own };
+    module = await load(modulePath, "your module");
+  } catch (error) {
+    parentPort.postMessage({ loadError: error.message });
+    return;
+  }
+  let index = 0;
+  for (const entry of cases.functions) {
+    for (const kase of entry.cases) {
+      if (index++ < start) continue;
+      const written = typeof module[entry.function] === "function";
+      parentPort.postMessage({ index: index - 1, problem: written ? runCase(entry, kase, adapter, module) : undefined, written });
+    }
+  }
+  parentPort.postMessage({ done: true });
+}
+
+// Runs every case, a worker at a time; a case past the time limit stops its worker,
+// and a new one goes on from the next case. Resolves to the verdicts, by case index.
+function runAll(file, options, count) {
+  return new Promise((resolve, reject) => {
+    const verdicts = [];
+    const startWorker = (start) => {
+      const worker = new Worker(__filename, {
+        workerData: { file, module: options.module, adapter: options.adapter, start },
+      });
+      let timer;
+      const arm = (limit) => {
+        clearTimeout(timer);
+        timer = setTimeout(() => {
+          worker.terminate();
+          const index = verdicts.length;
+          verdicts.push({ written: true, problem: `did not return within ${options.timeLimit} s` });
+          if (index + 1 < count) startWorker(index + 1); else resolve(verdicts);
+        }, limit * 1000);
+      };
+      arm(Math.max(60, options.timeLimit));  // loading the module
+      worker.on("message", (message) => {
+        if (message.loadError) { clearTimeout(timer); reject(Object.assign(new Error(message.loadError), { load: true })); return; }
+        if (message.done) { clearTimeout(timer); resolve(verdicts); return; }
+        verdicts[message.index] = message;
+        arm(options.timeLimit);
+      });
+      worker.on("error", (error) => { clearTimeout(timer); reject(Object.assign(new Error(`your module failed: ${where(error)}`), { load: true })); });
+    };
+    startWorker(0);
+  });
+}
+
+function parse(argv) {
+  const options = { timeLimit: 5 };
+  const positional = [];
+  for (let i = 0; i < argv.length; ++i) {
+    if (argv[i] === "--adapter") options.adapter = argv[++i];
+    else if (argv[i] === "--time-limit") options.timeLimit = Number(argv[++i]);
+    else if (argv[i].startsWith("-")) throw new Usage(`unknown option ${argv[i]} (usage: CHAPTER MODULE [--adapter FILE] [--time-limit SECONDS])`);
+    else positional.push(argv[i]);
+  }
+  if (positional.length !== 2) throw new Usage("give a chapter and your module: CHAPTER MODULE [--adapter FILE] [--time-limit SECONDS]");
+  [options.chapter, options.module] = positional;
+  if (!(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give 0 to 3600 seconds");
+  for (const file of [options.module, options.adapter]) {
+    if (file !== undefined && !(fs.existsSync(file) && fs.statSync(file).isFile())) throw new Usage(`${file}: no such file`);
+  }
+  return options;
+}
+
+async function main() {
+  const options = parse(process.argv.slice(2));
+  const files = fs.readdirSync(CASES_DIR).filter((name) => name.endsWith(".json")).sort();
+  const matches = files.filter((name) => name.startsWith(options.chapter));
+  if (options.chapter.length < 2 || matches.length !== 1) {
+    throw new Usage(`no cases for chapter '${options.chapter}'; there are cases for ${files.map((f) => f.replace(/\.json$/, "")).join(", ")}`);
+  }
+  const file = path.join(CASES_DIR, matches[0]);
+  const cases = JSON.parse(fs.readFileSync(file, "utf8"));
+  const count = cases.functions.reduce((sum, entry) => sum + entry.cases.length, 0);
+  const verdicts = await runAll(file, options, count);
+  console.log(`${cases.chapter}: ${path.basename(options.module)}, the book's functions one by one`);
+  let index = 0;
+  let failed = false;
+  for (const entry of cases.functions) {
+    const mine = entry.cases.map((kase, i) => ({ kase, number: i + 1, ...verdicts[index++] }));
+    const name = entry.function.padEnd(20);
+    if (!mine.every((each) => each.written)) {
+      console.log(`  ${name} not written yet (${mine.length} cases)`);
+      continue;
+    }
+    const failures = mine.filter((each) => each.problem);
+    if (failures.length === 0) {
+      console.log(`  ${name} passed (${mine.length} cases)`);
+      continue;
+    }
+    failed = true;
+    console.log(`  ${name} FAILED ${failures.length} of ${mine.length} cases`);
+    for (const { kase, number: n, problem } of failures) {
+      console.log(`    case ${n} of ${matches[0]}: ${kase.catches}`);
+      console.log(`      ${entry.call} with ${JSON.stringify({ ...(kase.given ?? {}), ...kase.args })}`);
+      console.log(`      ${problem}`);
+    }
+  }
+  return failed ? 1 : 0;
+}
+
+if (isMainThread) {
+  main().then((status) => { process.exitCode = status; }, (error) => {
+    if (error instanceof Usage) {
+      console.error(`check-functions.js: error: ${error.message}`);
+      process.exitCode = 2;
+    } else if (error.load) {
+      console.error(`check-functions.js: ${error.message}`);
+      process.exitCode = 1;
+    } else {
+      console.error(`check-functions.js: ${where(error)}`);
+      process.exitCode = 2;
+    }
+  });
+} else {
+  work();
+}

@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""Checks a Python chapter of "Computer Graphics from Scratch" one book function at a time.
+
+    check-functions.py CHAPTER YOUR_MODULE.py [--adapter YOUR_ADAPTER.py]
+
+CHAPTER is a chapter's number or folder name (02, 02-basic-rays). For every book
+function of the chapter that has cases in tests/cases/CHAPTER.json (the cases our C++
+tests run), the runner calls your function by the book's name with the book's
+parameters and prints whether it passed, failed (with the inputs, what was expected,
+what yours returned and the mistake the case catches) or is not written yet.
+
+The book's data reach your code as the default adapter below makes them: vectors and
+colours as tuples (x, y, z), spheres and lights as objects with the book's fields
+(sphere.center, light.type == "point"), and the book's globals (Cw, Ch, Vw, Vh, d,
+scene, BACKGROUND_COLOR) set on your module before each case. An adapter file of yours
+may define any of the functions of DefaultAdapter (same names, as plain functions) to
+build your own types instead (docs/students.md has an example).
+
+Exit status: 0 every case of every written function passed, 1 a case failed or your
+module does not load, 2 the command line is wrong. Nothing is written anywhere.
+"""
+
+import argparse
+import importlib.util
+import json
+import math
+import signal
+import sys
+import traceback
+import types
+from pathlib import Path
+
+sys.dont_write_bytecode = True  # never a __pycache__ in the student's folder
+
+CASES_DIR = Path(__file__).resolve().parents[3] / "tests" / "cases"
+
+
+class Usage(Exception):
+    """A wrong command line: one line, exit status 2."""
+
+
+class TimeLimit(Exception):
+    pass
+
+
+def number(value):
+    """A number of the cases: JSON's, or "inf" / "-inf"."""
+    if value == "inf":
+        return math.inf
+    if value == "-inf":
+        return -math.inf
+    return float(value)
+
+
+def numbers(value):
+    return tuple(number(each) for each in value)
+
+
+class DefaultAdapter:
+    """How the book's data reach your code, and how your results come back."""
+
+    @staticmethod
+    def vector(value):
+        return numbers(value)
+
+    @staticmethod
+    def color(value):
+        return numbers(value)
+
+    @classmethod
+    def sphere(cls, value):
+        return types.SimpleNamespace(
+            center=cls.vector(value["center"]), radius=number(value["radius"]),
+            color=cls.color(value["color"]), specular=number(value.get("specular", -1)),
+            reflective=number(value.get("reflective", 0)))
+
+    @classmethod
+    def light(cls, value):
+        return types.SimpleNamespace(
+            type=value["type"], intensity=number(value["intensity"]),
+            position=cls.vector(value.get("position", [0, 0, 0])),
+            direction=cls.vector(value.get("direction", [0, 0, 0])))
+
+    @classmethod
+    def scene(cls, value):
+        return types.SimpleNamespace(
+            spheres=[cls.sphere(each) for each in value.get("spheres", [])],
+            lights=[cls.light(each) for each in value.get("lights", [])],
+            background_color=cls.color(value.get("background_color", [255, 255, 255])))
+
+    @classmethod
+    def setup(cls, module, given):
+        """Sets the book's globals that a case gives on your module."""
+        if "canvas" in given:
+            module.Cw, module.Ch = given["canvas"]["width"], given["canvas"]["height"]
+        if "viewport" in given:
+            viewport = given["viewport"]
+            module.Vw, module.Vh = number(viewport["width"]), number(viewport["height"])
+            module.d = number(viewport["d"])
+        if "scene" in given:
+            module.scene = cls.scene(given["scene"])
+            module.BACKGROUND_COLOR = module.scene.background_color
+
+    @staticmethod
+    def result(kind, value):
+        """Your function's result as the list of numbers the case expects."""
+        if kind == "number":
+            return [float(value)]
+        if all(hasattr(value, axis) for axis in "xyz"):
+            value = (value.x, value.y, value.z)
+        return [float(each) for each in value]
+
+
+def load(path, what):
+    """Your module (or adapter), loaded from its file; its folder joins the import path."""
+    path = Path(path)
+    if not path.is_file():
+        raise Usage(f"{path}: no such file")
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    if spec is None or spec.loader is None:
+        raise Usage(f"{path}: not a Python file")
+    module = importlib.util.module_from_spec(spec)
+    sys.path.insert(0, str(path.resolve().parent))
+    signal.setitimer(signal.ITIMER_REAL, 60)
+    try:
+        spec.loader.exec_module(module)
+    except TimeLimit:
+        raise LoadError(f"{what} {path} does not load: still running after 60 s") from None
+    except BaseException as error:  # whatever their file does, one line
+        raise LoadError(f"{what} {path} does not load: {Where(error)}") from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+    return module
+
+
+class LoadError(Exception):
+    pass
+
+
+def Where(error):
+    """An exception in one line, at the last line of the student's code it went through."""
+    frames = [frame for frame in traceback.extract_tb(error.__traceback__)
+              if not frame.filename.startswith(str(Path(__file__).resolve().parent))]
+    place = f" (at {Path(frames[-1].filename).name}:{frames[-1].lineno})" if frames else ""
+    text = str(error).splitlines()[0] if str(error) else ""
+    return f"{type(error).__name__}{': ' + text if text else ''}{place}"
+
+
+def adapted(adapter_module):
+    """The default adapter with the functions of the student's adapter in its place."""
+    class Adapter(DefaultAdapter):
+        pass
+    if adapter_module is not None:
+        for name in ("vector", "color", "sphere", "light", "scene", "setup", "result"):
+            if hasattr(adapter_module, name):
+                setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
+    return Adapter
+
+
+def convert(adapter, kind, value):
+    if kind == "number":
+        return number(value)
+    return getattr(adapter, kind)(value)
+
+
+def on_alarm(signum, frame):
+    raise TimeLimit()
+
+
+def shown(values):
+    """Numbers as the cases write them: 0.75, not 0.75000000000000001; 255, not 255.0."""
+    return "[" + ", ".join(f"{value:.10g}" for value in values) + "]"
+
+
+def run_case(function, case, parameters, returns, adapter, module, time_limit):
+    """None when the case passes, else what went wrong, in lines."""
+    try:
+        adapter.setup(module, case.get("given", {}))
+        args = [convert(adapter, kind, case["args"][name]) for name, kind in parameters]
+    except BaseException as error:
+        return [f"your adapter failed to build the inputs: {Where(error)}"]
+    signal.setitimer(signal.ITIMER_REAL, time_limit)
+    try:
+        value = function(*args)
+    except TimeLimit:
+        return [f"did not return within {time_limit:g} s"]
+    except BaseException as error:
+        return [f"raised {Where(error)}"]
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+    try:
+        actual = adapter.result(returns, value)
+    except BaseException:
+        return [f"returned {value!r}, not a {returns}"]
+    expected = [number(each) for each in case["expected"]] \
+        if isinstance(case["expected"], list) else [number(case["expected"])]
+    tolerance = case["tolerance"]
+    if len(actual) == len(expected) and all(
+            a == e if math.isinf(e) else abs(a - e) <= tolerance for a, e in zip(actual, expected)):
+        return None
+    return [f"returned {shown(actual)}, expected {shown(expected)}" +
+            (f" (within {tolerance:g})" if tolerance else "")]
+
+
+def check_function(entry, adapter, module, file, time_limit):
+    """Prints the verdict of one book function; whether it failed."""
+    name = entry["function"]
+    function = getattr(module, name, None)
+    cases = entry["cases"]
+    if not callable(function):
+        print(f"  {name:20} not written yet ({len(cases)} cases)")
+        return False
+    failures = []
+    for number_, case in enumerate(cases, 1):
+        problem = run_case(function, case, entry["parameters"], entry["returns"], adapter, module,
+                           time_limit)
+        if problem:
+            failures.append((number_, case, problem))
+    if not failures:
+        print(f"  {name:20} passed ({len(cases)} cases)")
+        return False
+    print(f"  {name:20} FAILED {len(failures)} of {len(cases)} cases")
+    for number_, case, problem in failures:
+        print(f"    case {number_} of {file}: {case['catches']}")
+        inputs = dict(case.get("given", {}), **case["args"])
+        print(f"      {entry['call']} with {json.dumps(inputs)}")
+        for line in problem:
+            print(f"      {line}")
+    return True
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="check-functions.py", description=__doc__.split("\n")[0])
+    parser.add_argument("chapter", help="the chapter: its number (02) or folder name")
+    parser.add_argument("module", help="your chapter's Python file")
+    parser.add_argument("--adapter", help="your adapter's Python file (optional)")
+    parser.add_argument("--time-limit", type=float, default=5, metavar="SECONDS",
+                        help="how long a case may take (default 5)")
+    options = parser.parse_args(argv)
+    if not 0 < options.time_limit <= 3600:
+        raise Usage(f"--time-limit {options.time_limit:g}: give 0 to 3600 seconds")
+    matches = sorted(CASES_DIR.glob(f"{options.chapter}*.json"))
+    if len(options.chapter) < 2 or len(matches) != 1:
+        have = ", ".join(path.stem for path in sorted(CASES_DIR.glob("*.json")))
+        raise Usage(f"no cases for chapter '{options.chapter}'; there are cases for {have}")
+    cases = json.loads(matches[0].read_text())
+    signal.signal(signal.SIGALRM, on_alarm)
+    adapter = adapted(load(options.adapter, "your adapter") if options.adapter else None)
+    module = load(options.module, "your module")
+    print(f"{cases['chapter']}: {Path(options.module).name}, the book's functions one by one")
+    failed = [check_function(entry, adapter, module, matches[0].name, options.time_limit)
+              for entry in cases["functions"]]
+    return 1 if any(failed) else 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except Usage as error:
+        print(f"check-functions.py: error: {error}", file=sys.stderr)
+        sys.exit(2)
+    except LoadError as error:
+        print(f"check-functions.py: {error}", file=sys.stderr)
+        sys.exit(1)
