@@ -29,9 +29,9 @@ TEST_CASE("TraceRay: the cases of 02-basic-rays.json", "[equations]") {
   using cgfs::test::ToVector;
   for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("02-basic-rays.json", "TraceRay")) {
     INFO(c.Describe());
-    const Color color = TraceRay(ToVector(c.args.at("O")), ToVector(c.args.at("D")),
-                                 ToNumber(c.args.at("t_min")), ToNumber(c.args.at("t_max")),
-                                 SceneOfTraceRayCase(c.given));
+    const Color color =
+        TraceRay(ToVector(c.args.at("O")), ToVector(c.args.at("D")), ToNumber(c.args.at("t_min")),
+                 ToNumber(c.args.at("t_max")), SceneOfTraceRayCase(c.given));
     CHECK_THAT(cgfs::test::AsNumbers(color), cgfs::test::MatchesCase(c));
   }
 }

@@ -1,39 +1,47 @@
-// TraceRay (Listing 3-3) lights what it hits.
+// TraceRay (Listing 3-3), which lights what it hits, on its cases in
+// tests/cases/03-light.json; and the main loop.
 #include <catch2/catch.hpp>
 
+#include "cases.h"
+#include "light_of_case.h"
 #include "printing.h"
 #include "raytracer.h"
 
 using cgfs::test::IsSameImageAs;
 
-TEST_CASE("TraceRay keeps the nearest root inside [t_min, t_max]", "[equations]") {
-  Scene scene;
-  scene.background_color = cgfs::kWhite;
-  scene.spheres = {{{0, 0, 5}, 1, cgfs::kRed}, {{0, 0, 10}, 1, cgfs::kBlue}};
-  scene.lights = {{LightType::kAmbient, 1.0, {}, {}}};  // full ambient light: flat colours
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, scene) == cgfs::kRed);
-  // The red sphere spans t in [4, 6]: start past it and the blue one is nearest.
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 6.5, cgfs::kInf, scene) == cgfs::kBlue);
-  // Inside the red sphere, its far side (t = 6) is the nearest root past t_min.
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 5, cgfs::kInf, scene) == cgfs::kRed);
-  // Closed interval: a root exactly at t_max still counts.
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, 4, scene) == cgfs::kRed);
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, 3.99, scene) == cgfs::kWhite);
-  // Nothing behind the projection plane: t_min = 1 skips a sphere at t < 1.
-  scene.spheres = {{{0, 0, 0.5}, 0.1, cgfs::kRed}};
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, scene) == cgfs::kWhite);
+namespace {
+
+// The scene of a TraceRay case: its spheres (matte unless "specular" is given), its
+// lights and background.
+Scene SceneOfLitCase(const nlohmann::json& given) {
+  using cgfs::test::ToColor;
+  using cgfs::test::ToNumber;
+  const nlohmann::json& scene = given.at("scene");
+  Scene built;
+  built.background_color = ToColor(scene.at("background_color"));
+  for (const nlohmann::json& sphere : scene.at("spheres")) {
+    built.spheres.push_back({cgfs::test::ToVector(sphere.at("center")),
+                             ToNumber(sphere.at("radius")), ToColor(sphere.at("color")),
+                             ToNumber(sphere.value("specular", nlohmann::json(-1)))});
+  }
+  for (const nlohmann::json& light : scene.at("lights")) {
+    built.lights.push_back(LightOfCase(light));
+  }
+  return built;
 }
 
-TEST_CASE("TraceRay lights the hit point with the sphere's unit normal", "[equations]") {
-  // A directional light towards the camera; the central ray hits the sphere at
-  // (0, 0, 4) where N = (0, 0, -1): full intensity. A radius of 2 checks that N
-  // is normalised (an unnormalised N would double the diffuse term).
-  Scene scene;
-  scene.lights = {{LightType::kDirectional, 0.5, {}, {0, 0, -1}}};
-  scene.spheres = {{{0, 0, 6}, 2, {200, 100, 50}}};
-  CHECK(TraceRay({0, 0, 0}, {0, 0, 1}, 1, cgfs::kInf, scene) == Color(100, 50, 25));
-  // Seen from above at (0, 2, 6) the normal is (0, 1, 0): perpendicular to the light.
-  CHECK(TraceRay({0, 10, 6}, {0, -1, 0}, 1, cgfs::kInf, scene) == Color(0, 0, 0));
+}  // namespace
+
+TEST_CASE("TraceRay: the cases of 03-light.json", "[equations]") {
+  using cgfs::test::ToNumber;
+  using cgfs::test::ToVector;
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("03-light.json", "TraceRay")) {
+    INFO(c.Describe());
+    const Color color =
+        TraceRay(ToVector(c.args.at("O")), ToVector(c.args.at("D")), ToNumber(c.args.at("t_min")),
+                 ToNumber(c.args.at("t_max")), SceneOfLitCase(c.given));
+    CHECK_THAT(cgfs::test::AsNumbers(color), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("RenderScene paints every pixel of the canvas exactly once", "[equations]") {

@@ -46,11 +46,15 @@ Color ToColor(const nlohmann::json& value);
 bool Near(double actual, double expected, double tolerance);
 
 // What a function returned, as the list of numbers the case expects.
-inline std::vector<double> AsNumbers(const Vec3& value) { return {value.x, value.y, value.z}; }
+inline std::vector<double> AsNumbers(const Vec3& value) {
+  return {value.x, value.y, value.z};
+}
 inline std::vector<double> AsNumbers(const std::pair<double, double>& value) {
   return {value.first, value.second};
 }
-inline std::vector<double> AsNumbers(double value) { return {value}; }
+inline std::vector<double> AsNumbers(double value) {
+  return {value};
+}
 
 // CHECK_THAT(AsNumbers(yours), MatchesCase(c)): each number within the case's
 // tolerance of the one expected; a failure prints both lists.
