@@ -1,6 +1,8 @@
 #include "report.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <sstream>
 #include <system_error>
 #include <utility>
@@ -145,6 +147,37 @@ bool IsImageName(const fs::path& path) {
   return image && !path.stem().string().ends_with(".diff");
 }
 
+// file:///... for a file, each byte outside letters, digits and -._~/ percent-encoded.
+std::string FileUrl(const fs::path& file) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string url = "file://";
+  for (const unsigned char c : fs::absolute(file).generic_string()) {
+    if (std::isalnum(c) || std::strchr("-._~/", c) != nullptr) {
+      url += static_cast<char>(c);
+    } else {
+      url += {'%', kHex[c >> 4], kHex[c & 15]};
+    }
+  }
+  return url;
+}
+
+// For a failed figure of a chapter whose book functions have cases
+// (tests/cases/CHAPTER.json): where they are, and the commands that run them against a
+// Python or JavaScript chapter (docs/students.md). Empty otherwise.
+std::string FunctionCasesNote(const ReportEntry& entry) {
+  const fs::path cases = fs::path(CGFS_SOURCE_DIR) / "tests" / "cases" / (entry.chapter + ".json");
+  std::error_code error;
+  if (entry.verdict != ReportEntry::Verdict::kFailed || !fs::is_regular_file(cases, error)) {
+    return "";
+  }
+  const std::string number = entry.chapter.substr(0, 2);
+  return "<p class=\"cases\">Its functions one at a time, on the cases of <a href=\"" +
+         Escaped(FileUrl(cases)) + "\">" + Escaped(entry.chapter) +
+         ".json</a>: <code>python3 tools/check-functions/python/check-functions.py " + number +
+         " YOUR_FILE.py</code> or <code>node tools/check-functions/js/check-functions.js " +
+         number + " YOUR_FILE.js</code> (docs/students.md).</p>";
+}
+
 }  // namespace
 
 std::vector<std::string> UnmatchedNames(const fs::path& folder, const fs::path& golden) {
@@ -267,8 +300,8 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
     }
     // The README is Markdown, which a browser shows as raw text: named, not linked.
     page << "<pre>" << Escaped(entry.message) << "</pre><p>The chapter's figures and where "
-         << "the sources disagree: <code>" << Escaped(readme.generic_string())
-         << "</code></p></td>" << ImageCell(entry.expected, "ours");
+         << "the sources disagree: <code>" << Escaped(readme.generic_string()) << "</code></p>"
+         << FunctionCasesNote(entry) << "</td>" << ImageCell(entry.expected, "ours");
     if (entry.verdict != ReportEntry::Verdict::kMissing) {
       page << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference");
     }

@@ -118,5 +118,30 @@ if command -v node >/dev/null; then
 else
   echo "SKIPPED: no node to run the JavaScript runner (CI installs nodejs: scripts/setup)"
 fi
+if command -v python3 >/dev/null && command -v node >/dev/null; then
+  echo "== docs/students.md: its commands as written, on its layout"
+  export HOME=$work/home
+  mkdir -p ~/my-cgfs/02-basic-rays ~/my-cgfs-js/02-basic-rays
+  cp "$source_dir/tools/check-functions/python/reference/basic_rays.py" ~/my-cgfs/02-basic-rays/raytracer.py
+  cp "$source_dir/tools/check-functions/js/reference/basic-rays.js" ~/my-cgfs-js/02-basic-rays/raytracer.js
+  sed 's|\./basic-rays\.js|./raytracer.js|' "$source_dir/tools/check-functions/js/reference/basic-rays-adapter.js" \
+    >~/my-cgfs-js/02-basic-rays/adapter.js
+  # The fenced block after the marker: the commands, one a line.
+  mapfile -t commands < <(awk '/<!-- checkers:/ { marked = 1 } marked && /^```sh/ { inside = 1; next }
+    inside && /^```/ { exit } inside { print }' "$source_dir/docs/students.md")
+  check "docs/students.md gives both commands" test ${#commands[@]} -eq 2
+  for command in "${commands[@]}"; do
+    (cd "$source_dir" && eval "$command") >"$work/out.txt" 2>&1 && status=0 || status=$?
+    check "as documented: $command" test $status -eq 0
+    check "every function passed" bash -c '[ "$(grep -c " passed (" "$1")" -eq 3 ]' _ "$work/out.txt"
+  done
+  # The worked example: its output is what the command prints for the mistake it shows.
+  sed -i 's|y \* Vh / Ch|y * Vh / Cw|' ~/my-cgfs/02-basic-rays/raytracer.py
+  example=$(awk '/^\$ python3 tools\/check-functions/ { inside = 1; sub(/^\$ /, ""); print; next }
+    inside && /^```/ { exit } inside { print }' "$source_dir/docs/students.md")
+  (cd "$source_dir" && eval "$(head -1 <<<"$example")") >"$work/out.txt" 2>&1 || true
+  check "the worked example's output is what the checker prints" \
+    diff <(tail -n +2 <<<"$example") "$work/out.txt"
+fi
 [ $failed -eq 0 ] && echo "PASS: the runners check functions as documented"
 exit $failed

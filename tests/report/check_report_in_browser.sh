@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The HTML report of `cgfs-compare --report`, loaded in a real browser (headless
 # Chromium): a student folder with one right figure, one wrong, one moved one row
-# down and one missing (its image misnamed). Checks the verdicts printed, and in
+# down and one missing (its image misnamed). Checks the verdicts printed, that each
+# failed figure links its chapter's function cases (tests/cases), and in
 # the browser that every image shows, that the counts at the top match the rows,
 # that a click enlarges an image and another shrinks it, and that no Markdown file is
 # linked. Leaves a screenshot in WORK_DIR/report.png. Without Chromium the browser part is skipped.
@@ -29,6 +30,10 @@ want "02-basic-rays/fig-2-11-with-ground: FAIL (your image is ours moved one row
 want "03-light/fig-3-7-diffuse: FAIL"
 want "03-light/fig-3-16-specular: missing"
 want "03-light/fig-3-16.ppm: not one of our figures, not compared (did you mean fig-3-16-specular?)"
+# A failed figure of a chapter with function cases points to them, and to the checkers.
+cases_links=$(grep -o '<p class="cases">Its functions one at a time, on the cases of <a href="file://[^"]*/tests/cases/0[23]-[a-z-]*\.json">' \
+  "$work/mine/report.html" | wc -l)
+[ "$cases_links" -eq 2 ] || { echo "FAIL: $cases_links failed figures link their chapter's function cases, not 2"; failed=1; }
 
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then

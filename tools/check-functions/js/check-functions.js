@@ -38,6 +38,16 @@ function number(value) {
 
 const numbers = (value) => value.map(number);
 
+// A case's JSON with "inf" and "-inf" made numbers, so that adapters see numbers only.
+function decoded(value) {
+  if (value === "inf" || value === "-inf") return number(value);
+  if (Array.isArray(value)) return value.map(decoded);
+  if (value && typeof value === "object") {
+    return Object.fromEntries(Object.entries(value).map(([key, each]) => [key, decoded(each)]));
+  }
+  return value;
+}
+
 const defaultAdapter = {
   vector: (value) => numbers(value),
   color: (value) => numbers(value),
@@ -112,9 +122,11 @@ const shown = (values) => `[${values.map((v) => Number.isFinite(v) ? +v.toPrecis
 function runCase(entry, kase, adapter, module) {
   let args;
   try {
-    adapter.setup(module, kase.given ?? {}, adapter);
-    args = entry.parameters.map(([name, kind]) =>
-      kind === "number" ? number(kase.args[name]) : adapter[kind](kase.args[name], adapter));
+    adapter.setup(module, decoded(kase.given ?? {}), adapter);
+    args = entry.parameters.map(([name, kind]) => {
+      const value = decoded(kase.args[name]);
+      return kind === "number" ? value : adapter[kind](value, adapter);
+    });
   } catch (error) {
     return `your adapter failed to build the inputs: ${where(error)}`;
   }

@@ -5,7 +5,7 @@
 const { Vec3 } = require("./basic-rays.js");
 
 module.exports = {
-  vector: ([x, y, z]) => new Vec3(Number(x), Number(y), Number(z)),
+  vector: ([x, y, z]) => new Vec3(x, y, z),
   setup(module, given, adapter) {
     module.configure({ scene: given.scene && adapter.scene(given.scene, adapter) });
   },
