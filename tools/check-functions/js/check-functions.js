@@ -84,9 +84,15 @@ const defaultAdapter = {
       globalThis.BACKGROUND_COLOR = globalThis.scene.background_color;
     }
   },
-  // Your function's result as the list of numbers the case expects.
-  result(kind, value) {
+  // Your function's result as the list of numbers the case expects: a number, a vector
+  // or colour, two roots, or ClosestIntersection's sphere (by its index in the case's
+  // scene, -1 for none) and t.
+  result(kind, value, given, adapter) {
     if (kind === "number") return [Number(value)];
+    if (kind === "closest") {
+      const [sphere, t] = value;
+      return [adapter.indexOf(sphere, given, adapter), Number(t)];
+    }
     if (value && ["x", "y", "z"].every((axis) => axis in value)) value = [value.x, value.y, value.z];
     if (!value || typeof value[Symbol.iterator] !== "function") throw new TypeError("not a list");
     return Array.from(value, (each) => {
@@ -94,6 +100,17 @@ const defaultAdapter = {
       return each;
     });
   },
+};
+
+// Which sphere of the case's scene yours is (-1 for none): the one with its centre
+// and radius.
+defaultAdapter.indexOf = function (sphere, given, adapter) {
+  if (sphere === null || sphere === undefined) return -1;
+  const center = adapter.result("vector", sphere.center, given, adapter);
+  const index = given.scene.spheres.findIndex((each) =>
+    each.center.every((v, i) => v === center[i]) && each.radius === sphere.radius);
+  if (index < 0) throw new TypeError("not a sphere of the scene");
+  return index;
 };
 
 class Usage extends Error {}
@@ -138,7 +155,7 @@ function runCase(entry, kase, adapter, module) {
   }
   let actual;
   try {
-    actual = adapter.result(entry.returns, value);
+    actual = adapter.result(entry.returns, value, decoded(kase.given ?? {}), adapter);
   } catch {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }

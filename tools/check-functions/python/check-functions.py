@@ -112,14 +112,32 @@ class DefaultAdapter:
             module.scene = cls.scene(given["scene"])
             module.BACKGROUND_COLOR = module.scene.background_color
 
-    @staticmethod
-    def result(kind, value):
-        """Your function's result as the list of numbers the case expects."""
+    @classmethod
+    def result(cls, kind, value, given):
+        """Your function's result as the list of numbers the case expects: a number, a
+        vector or colour, two roots, or ClosestIntersection's sphere (by its index in
+        the case's scene, -1 for none) and t."""
         if kind == "number":
             return [float(value)]
+        if kind == "closest":
+            sphere, t = value
+            return [cls.index_of(sphere, given), float(t)]
         if all(hasattr(value, axis) for axis in "xyz"):
             value = (value.x, value.y, value.z)
         return [float(each) for each in value]
+
+    @classmethod
+    def index_of(cls, sphere, given):
+        """Which sphere of the case's scene yours is: the one with its centre and radius."""
+        if sphere is None:
+            return -1
+        field = (lambda name: sphere[name]) if isinstance(sphere, dict) else \
+            (lambda name: getattr(sphere, name))
+        center = cls.result("vector", field("center"), given)
+        for index, each in enumerate(given["scene"]["spheres"]):
+            if numbers(each["center"]) == tuple(center) and number(each["radius"]) == field("radius"):
+                return index
+        raise ValueError("not a sphere of the scene")
 
 
 def load(path, what):
@@ -162,7 +180,7 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "color", "sphere", "light", "scene", "setup", "result"):
+        for name in ("vector", "color", "sphere", "light", "scene", "setup", "result", "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
@@ -200,7 +218,7 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
     try:
-        actual = adapter.result(returns, value)
+        actual = adapter.result(returns, value, decoded(case.get("given", {})))
     except BaseException:
         return [f"returned {value!r}, not a {returns}"]
     expected = [number(each) for each in case["expected"]] \
