@@ -14,8 +14,6 @@ using cgfs::test::IsSameImageAs;
 
 namespace {
 
-constexpr char kShadowCases[] = "04-shadows-reflections.json";
-
 // The scene of a case: its spheres (matte and not reflective unless given), lights and
 // background.
 Scene SceneOfShadowCase(const nlohmann::json& given) {
@@ -42,7 +40,7 @@ TEST_CASE("ClosestIntersection: the cases of 04-shadows-reflections.json", "[equ
   using cgfs::test::ToNumber;
   using cgfs::test::ToVector;
   for (const cgfs::test::FunctionCase& c :
-       cgfs::test::CasesOf(kShadowCases, "ClosestIntersection")) {
+       cgfs::test::CasesOf("04-shadows-reflections.json", "ClosestIntersection")) {
     INFO(c.Describe());
     const Scene scene = SceneOfShadowCase(c.given);
     const auto [sphere, t] =
@@ -57,7 +55,8 @@ TEST_CASE("ClosestIntersection: the cases of 04-shadows-reflections.json", "[equ
 
 TEST_CASE("ReflectRay: the cases of 04-shadows-reflections.json", "[equations]") {
   using cgfs::test::ToVector;
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf(kShadowCases, "ReflectRay")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("04-shadows-reflections.json", "ReflectRay")) {
     INFO(c.Describe());
     CHECK_THAT(
         cgfs::test::AsNumbers(ReflectRay(ToVector(c.args.at("R")), ToVector(c.args.at("N")))),
@@ -67,7 +66,8 @@ TEST_CASE("ReflectRay: the cases of 04-shadows-reflections.json", "[equations]")
 
 TEST_CASE("ComputeLighting: the cases of 04-shadows-reflections.json", "[equations]") {
   using cgfs::test::ToVector;
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf(kShadowCases, "ComputeLighting")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("04-shadows-reflections.json", "ComputeLighting")) {
     INFO(c.Describe());
     const double i = ComputeLighting(ToVector(c.args.at("P")), ToVector(c.args.at("N")),
                                      ToVector(c.args.at("V")), cgfs::test::ToNumber(c.args.at("s")),
@@ -79,7 +79,8 @@ TEST_CASE("ComputeLighting: the cases of 04-shadows-reflections.json", "[equatio
 TEST_CASE("TraceRay: the cases of 04-shadows-reflections.json", "[equations]") {
   using cgfs::test::ToNumber;
   using cgfs::test::ToVector;
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf(kShadowCases, "TraceRay")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("04-shadows-reflections.json", "TraceRay")) {
     INFO(c.Describe());
     const Color color = TraceRay(ToVector(c.args.at("O")), ToVector(c.args.at("D")),
                                  ToNumber(c.args.at("t_min")), ToNumber(c.args.at("t_max")),
