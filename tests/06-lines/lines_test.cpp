@@ -1,5 +1,7 @@
-// Interpolate, exactly, and the final DrawLine, pixel by pixel. Every later
-// rasterizer chapter keeps lines.cpp unchanged and runs these tests too.
+// Interpolate and the final DrawLine, pixel by pixel, on their cases in
+// tests/cases/06-lines.json (shared with the runners for other languages), and
+// properties of long lines. Every later rasterizer chapter keeps lines.cpp unchanged
+// and runs these tests too.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,21 +10,35 @@
 #include <utility>
 #include <vector>
 
+#include "cases.h"
 #include "lines.h"
 #include "pixels.h"
 
-TEST_CASE("Interpolate returns one value per integer step", "[interpolate]") {
-  CHECK(Interpolate(0, 0, 4, 2) == std::vector<double>{0, 0.5, 1, 1.5, 2});
-  CHECK(Interpolate(0, 10, 2, 0) == std::vector<double>{10, 5, 0});
-  CHECK(Interpolate(-2, 1, 1, -5) == std::vector<double>{1, -1, -3, -5});
+TEST_CASE("Interpolate: the cases of 06-lines.json", "[interpolate]") {
+  using cgfs::test::ToNumber;
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("06-lines.json", "Interpolate")) {
+    INFO(c.Describe());
+    const std::vector<double> values =
+        Interpolate(static_cast<int>(ToNumber(c.args.at("i0"))), ToNumber(c.args.at("d0")),
+                    static_cast<int>(ToNumber(c.args.at("i1"))), ToNumber(c.args.at("d1")));
+    CHECK_THAT(cgfs::test::AsNumbers(values), cgfs::test::MatchesCase(c));
+  }
 }
 
-TEST_CASE("Interpolate with i0 == i1 returns [d0]", "[interpolate]") {
-  CHECK(Interpolate(3, 7, 3, 9) == std::vector<double>{7});
-}
-
-TEST_CASE("Interpolate over a descending range returns nothing", "[interpolate]") {
-  CHECK(Interpolate(5, 0, 3, 1).empty());
+TEST_CASE("DrawLine: the cases of 06-lines.json", "[draw-line]") {
+  using cgfs::test::ToNumber;
+  const auto point = [](const nlohmann::json& P) {
+    return Point{static_cast<int>(ToNumber(P.at(0))), static_cast<int>(ToNumber(P.at(1)))};
+  };
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("06-lines.json", "DrawLine")) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    Canvas canvas(size.at("width").get<int>(), size.at("height").get<int>(),
+                  cgfs::test::kCaseBackground);
+    DrawLine(point(c.args.at("P0")), point(c.args.at("P1")),
+             cgfs::test::ToColor(c.args.at("color")), canvas);
+    CHECK_THAT(cgfs::test::DrawnPixelsAsNumbers(canvas), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("Interpolate does not drift: the last value is d1", "[interpolate]") {

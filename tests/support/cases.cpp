@@ -1,6 +1,7 @@
 #include "cases.h"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -70,14 +71,41 @@ bool Near(double actual, double expected, double tolerance) {
   return std::abs(actual - expected) <= tolerance;
 }
 
-MatchesCase::MatchesCase(const FunctionCase& c) : tolerance_(c.tolerance) {
-  if (c.expected.is_array()) {
-    for (const nlohmann::json& each : c.expected) {
-      expected_.push_back(ToNumber(each));
+namespace {
+
+// Every number of a case's expected value, lists within lists flattened in order.
+void Flatten(const nlohmann::json& value, std::vector<double>& numbers) {
+  if (value.is_array()) {
+    for (const nlohmann::json& each : value) {
+      Flatten(each, numbers);
     }
   } else {
-    expected_.push_back(ToNumber(c.expected));
+    numbers.push_back(ToNumber(value));
   }
+}
+
+}  // namespace
+
+std::vector<double> DrawnPixelsAsNumbers(const Canvas& canvas) {
+  const Rgb8 background{static_cast<std::uint8_t>(kCaseBackground.r),
+                        static_cast<std::uint8_t>(kCaseBackground.g),
+                        static_cast<std::uint8_t>(kCaseBackground.b)};
+  std::vector<double> pixels;
+  for (int x = -canvas.Width() / 2; x < canvas.Width() / 2; ++x) {
+    for (int y = -canvas.Height() / 2; y < canvas.Height() / 2; ++y) {
+      const Rgb8 pixel = canvas.GetPixel(x, y);
+      if (!(pixel == background)) {
+        pixels.insert(pixels.end(),
+                      {static_cast<double>(x), static_cast<double>(y), static_cast<double>(pixel.r),
+                       static_cast<double>(pixel.g), static_cast<double>(pixel.b)});
+      }
+    }
+  }
+  return pixels;
+}
+
+MatchesCase::MatchesCase(const FunctionCase& c) : tolerance_(c.tolerance) {
+  Flatten(c.expected, expected_);
 }
 
 bool MatchesCase::match(const std::vector<double>& actual) const {

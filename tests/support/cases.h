@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cgfs/canvas.h"
 #include "cgfs/color.h"
 #include "cgfs/math.h"
 
@@ -55,6 +56,15 @@ inline std::vector<double> AsNumbers(const std::pair<double, double>& value) {
 inline std::vector<double> AsNumbers(double value) {
   return {value};
 }
+inline std::vector<double> AsNumbers(const std::vector<double>& values) {
+  return values;
+}
+
+// The background of a canvas that a case's function draws on: a colour no case draws.
+inline constexpr Color kCaseBackground{1, 2, 3};
+// The pixels drawn on such a canvas, as the cases list them: [x, y, r, g, b] in canvas
+// coordinates, sorted by x, then y; flattened.
+std::vector<double> DrawnPixelsAsNumbers(const Canvas& canvas);
 
 // CHECK_THAT(AsNumbers(yours), MatchesCase(c)): each number within the case's
 // tolerance of the one expected; a failure prints both lists.
