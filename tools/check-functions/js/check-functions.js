@@ -48,8 +48,28 @@ function decoded(value) {
   return value;
 }
 
+// What a drawing function puts, as a canvas of the case's size keeps it: each pixel's x
+// and y truncated toward zero (docs/conventions.md), its colour clamped to 0..255 and
+// rounded, the last colour put at a pixel kept, pixels outside the canvas dropped.
+class Canvas {
+  constructor(width, height) {
+    Object.assign(this, { width, height, pixels: new Map() });
+    this.PutPixel = this.PutPixel.bind(this);
+  }
+  PutPixel(x, y, color) {
+    [x, y] = [Math.trunc(x), Math.trunc(y)];
+    const inside = (v, size) => -Math.floor(size / 2) <= v && v < Math.floor(size / 2);
+    if (!inside(x, this.width) || !inside(y, this.height)) return;
+    this.pixels.set(`${x},${y}`, [x, y, ...Array.from(color, (c) => Math.floor(Math.min(255, Math.max(0, c)) + 0.5))]);
+  }
+  drawn() {
+    return [...this.pixels.values()].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  }
+}
+
 const defaultAdapter = {
   vector: (value) => numbers(value),
+  point: ([x, y]) => ({ x, y }),
   color: (value) => numbers(value),
   sphere(value, adapter) {
     return {
@@ -72,9 +92,13 @@ const defaultAdapter = {
       background_color: adapter.color(value.background_color ?? [255, 255, 255]),
     };
   },
-  // Sets the book's globals that a case gives.
+  // Sets the book's globals that a case gives; for a drawing function, PutPixel is the
+  // checker's (given.canvas.PutPixel).
   setup(module, given, adapter) {
-    if (given.canvas) [globalThis.Cw, globalThis.Ch] = [given.canvas.width, given.canvas.height];
+    if (given.canvas) {
+      [globalThis.Cw, globalThis.Ch] = [given.canvas.width, given.canvas.height];
+      if (given.canvas.PutPixel) globalThis.PutPixel = given.canvas.PutPixel;
+    }
     if (given.viewport) {
       [globalThis.Vw, globalThis.Vh] = [number(given.viewport.width), number(given.viewport.height)];
       globalThis.d = number(given.viewport.d);
@@ -89,6 +113,7 @@ const defaultAdapter = {
   // scene, -1 for none) and t.
   result(kind, value, given, adapter) {
     if (kind === "number") return [Number(value)];
+    if (kind === "numbers") return Array.from(value, Number);
     if (kind === "closest") {
       const [sphere, t] = value;
       return [adapter.indexOf(sphere, given, adapter), Number(t)];
@@ -135,11 +160,37 @@ async function load(file, what) {
 
 const shown = (values) => `[${values.map((v) => Number.isFinite(v) ? +v.toPrecision(10) : v).join(", ")}]`;
 
+// null when a drawing function put exactly the pixels expected, else which differ.
+function pixelDifferences(drawn, expected) {
+  const key = ([x, y]) => `${x},${y}`;
+  const yours = new Map(drawn.map((p) => [key(p), p]));
+  const ours = new Map(expected.map((p) => [key(p), p]));
+  const same = (a, b) => a.slice(2).every((c, i) => c === b[i + 2]);
+  const lines = [];
+  for (const [what, pixels] of [
+    ["missing", [...ours.values()].filter((p) => !yours.has(key(p)))],
+    ["extra", [...yours.values()].filter((p) => !ours.has(key(p)))],
+    ["of another colour", [...ours.values()].filter((p) => yours.has(key(p)) && !same(yours.get(key(p)), p))],
+  ]) {
+    if (pixels.length === 0) continue;
+    const listed = pixels.slice(0, 8).map((p) => `(${p[0]}, ${p[1]})` + (what === "of another colour"
+      ? ` yours (${yours.get(key(p)).slice(2).join(", ")}) ours (${p.slice(2).join(", ")})` : "")).join(", ");
+    lines.push(`${pixels.length} pixels ${what}: ${listed}${pixels.length > 8 ? ` and ${pixels.length - 8} more` : ""}`);
+  }
+  return lines.length ? lines.join("\n      ") : null;
+}
+
 // null when the case passes, else what went wrong, in one line.
 function runCase(entry, kase, adapter, module) {
   let args;
+  const given = decoded(kase.given ?? {});
+  let canvas = null;
+  if (entry.returns === "pixels") {  // what the function draws, through the checker's PutPixel
+    canvas = new Canvas(given.canvas.width, given.canvas.height);
+    given.canvas.PutPixel = canvas.PutPixel;
+  }
   try {
-    adapter.setup(module, decoded(kase.given ?? {}), adapter);
+    adapter.setup(module, given, adapter);
     args = entry.parameters.map(([name, kind]) => {
       const value = decoded(kase.args[name]);
       return kind === "number" ? value : adapter[kind](value, adapter);
@@ -153,13 +204,14 @@ function runCase(entry, kase, adapter, module) {
   } catch (error) {
     return `threw ${where(error)}`;
   }
+  if (canvas) return pixelDifferences(canvas.drawn(), kase.expected);
   let actual;
   try {
     actual = adapter.result(entry.returns, value, decoded(kase.given ?? {}), adapter);
   } catch {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }
-  const expected = Array.isArray(kase.expected) ? numbers(kase.expected) : [number(kase.expected)];
+  const expected = [decoded(kase.expected)].flat(Infinity);
   const tolerance = kase.tolerance;
   const near = (a, e) => (Number.isFinite(e) ? Math.abs(a - e) <= tolerance : a === e);
   if (actual.length === expected.length && actual.every((a, i) => near(a, expected[i]))) return null;

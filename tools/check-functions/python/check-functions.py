@@ -21,6 +21,7 @@ module does not load, 2 the command line is wrong. Nothing is written anywhere.
 """
 
 import argparse
+import collections
 import importlib.util
 import json
 import math
@@ -44,12 +45,13 @@ class TimeLimit(Exception):
 
 
 def number(value):
-    """A number of the cases: JSON's, or "inf" / "-inf"."""
+    """A number of the cases: JSON's (a whole number stays an int, as the book's
+    pixel coordinates and indices are), or "inf" / "-inf"."""
     if value == "inf":
         return math.inf
     if value == "-inf":
         return -math.inf
-    return float(value)
+    return value if isinstance(value, int) and not isinstance(value, bool) else float(value)
 
 
 def numbers(value):
@@ -67,12 +69,38 @@ def decoded(value):
     return value
 
 
+Point = collections.namedtuple("Point", "x y")
+Vector = collections.namedtuple("Vector", "x y z")
+
+
+class Canvas:
+    """What a drawing function puts, as a canvas of the case's size keeps it: each pixel's
+    x and y truncated toward zero (docs/conventions.md), its colour clamped to 0..255 and
+    rounded, the last colour put at a pixel kept, pixels outside the canvas dropped."""
+
+    def __init__(self, width, height):
+        self.width, self.height = width, height
+        self.pixels = {}
+
+    def PutPixel(self, x, y, color):
+        x, y = math.trunc(x), math.trunc(y)
+        if -self.width // 2 <= x < self.width // 2 and -self.height // 2 <= y < self.height // 2:
+            self.pixels[(x, y)] = [math.floor(min(255, max(0, c)) + 0.5) for c in color]
+
+    def drawn(self):
+        return [[x, y, *self.pixels[(x, y)]] for x, y in sorted(self.pixels)]
+
+
 class DefaultAdapter:
     """How the book's data reach your code, and how your results come back."""
 
     @staticmethod
     def vector(value):
-        return numbers(value)
+        return Vector(*numbers(value))
+
+    @staticmethod
+    def point(value):
+        return Point(*numbers(value))
 
     @staticmethod
     def color(value):
@@ -101,9 +129,12 @@ class DefaultAdapter:
 
     @classmethod
     def setup(cls, module, given):
-        """Sets the book's globals that a case gives on your module."""
+        """Sets the book's globals that a case gives on your module; for a drawing
+        function, PutPixel is the checker's (given["canvas"]["PutPixel"])."""
         if "canvas" in given:
             module.Cw, module.Ch = given["canvas"]["width"], given["canvas"]["height"]
+            if "PutPixel" in given["canvas"]:
+                module.PutPixel = given["canvas"]["PutPixel"]
         if "viewport" in given:
             viewport = given["viewport"]
             module.Vw, module.Vh = number(viewport["width"]), number(viewport["height"])
@@ -119,6 +150,8 @@ class DefaultAdapter:
         the case's scene, -1 for none) and t."""
         if kind == "number":
             return [float(value)]
+        if kind == "numbers":
+            return [float(each) for each in value]
         if kind == "closest":
             sphere, t = value
             return [cls.index_of(sphere, given), float(t)]
@@ -180,7 +213,8 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "color", "sphere", "light", "scene", "setup", "result", "index_of"):
+        for name in ("vector", "point", "color", "sphere", "light", "scene", "setup", "result",
+                     "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
@@ -196,6 +230,30 @@ def on_alarm(signum, frame):
     raise TimeLimit()
 
 
+def flattened(value):
+    """Every number of a case's expected value, lists within lists flattened in order."""
+    if isinstance(value, list):
+        return [n for each in value for n in flattened(each)]
+    return [number(value)]
+
+
+def pixel_differences(drawn, expected):
+    """None when a drawing function put exactly the pixels expected, else which differ."""
+    yours = {(x, y): (r, g, b) for x, y, r, g, b in drawn}
+    ours = {(x, y): (r, g, b) for x, y, r, g, b in expected}
+    lines = []
+    for what, pixels in (("missing", [p for p in ours if p not in yours]),
+                         ("extra", [p for p in yours if p not in ours]),
+                         ("of another colour", [p for p in ours if p in yours and yours[p] != ours[p]])):
+        if pixels:
+            listed = ", ".join(f"({x}, {y})" + (f" yours {yours[(x, y)]} ours {ours[(x, y)]}"
+                                                 if what == "of another colour" else "")
+                               for x, y in sorted(pixels)[:8])
+            more = f" and {len(pixels) - 8} more" if len(pixels) > 8 else ""
+            lines.append(f"{len(pixels)} pixels {what}: {listed}{more}")
+    return lines or None
+
+
 def shown(values):
     """Numbers as the cases write them: 0.75, not 0.75000000000000001; 255, not 255.0."""
     return "[" + ", ".join(f"{value:.10g}" for value in values) + "]"
@@ -203,8 +261,13 @@ def shown(values):
 
 def run_case(function, case, parameters, returns, adapter, module, time_limit):
     """None when the case passes, else what went wrong, in lines."""
+    given = decoded(case.get("given", {}))
+    canvas = None
+    if returns == "pixels":  # what the function draws, through the checker's PutPixel
+        canvas = Canvas(given["canvas"]["width"], given["canvas"]["height"])
+        given["canvas"]["PutPixel"] = canvas.PutPixel
     try:
-        adapter.setup(module, decoded(case.get("given", {})))
+        adapter.setup(module, given)
         args = [convert(adapter, kind, decoded(case["args"][name])) for name, kind in parameters]
     except BaseException as error:
         return [f"your adapter failed to build the inputs: {Where(error)}"]
@@ -217,12 +280,13 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         return [f"raised {Where(error)}"]
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
+    if canvas:
+        return pixel_differences(canvas.drawn(), case["expected"])
     try:
         actual = adapter.result(returns, value, decoded(case.get("given", {})))
     except BaseException:
         return [f"returned {value!r}, not a {returns}"]
-    expected = [number(each) for each in case["expected"]] \
-        if isinstance(case["expected"], list) else [number(case["expected"])]
+    expected = flattened(decoded(case["expected"]))
     tolerance = case["tolerance"]
     if len(actual) == len(expected) and all(
             a == e if math.isinf(e) else abs(a - e) <= tolerance for a, e in zip(actual, expected)):
