@@ -1,5 +1,6 @@
-// DrawWireframeTriangle and DrawFilledTriangle, pixel by pixel. Every later
-// rasterizer chapter keeps them unchanged and runs these tests too.
+// DrawWireframeTriangle and DrawFilledTriangle, pixel by pixel: on their cases, and on
+// the chapter's own triangle. Every later rasterizer chapter keeps them unchanged and
+// runs these tests too.
 #include <catch2/catch.hpp>
 
 #include <set>
@@ -7,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "cases.h"
 #include "pixels.h"
 #include "triangles.h"
 
@@ -26,20 +28,42 @@ Pixels FilledPixels(Point P0, Point P1, Point P2) {
 
 }  // namespace
 
-TEST_CASE("Interpolate: the edge lists of the chapter's triangle", "[triangle]") {
-  // After sorting, y0 = -250, y1 = 50, y2 = 250.
-  std::vector<double> x01 = Interpolate(-250, -200, 50, 200);
-  const std::vector<double> x12 = Interpolate(50, 200, 250, 20);
-  const std::vector<double> x02 = Interpolate(-250, -200, 250, 20);
-  CHECK(x02.size() == 501);
-  CHECK(x01.size() == 301);
-  CHECK(x12.size() == 201);
-  x01.pop_back();
-  x01.insert(x01.end(), x12.begin(), x12.end());
-  CHECK(x01.size() == 501);
-  // m = 250: x02 is the left side there.
-  CHECK(x02[250] == Approx(-90));
-  CHECK(x01[250] == Approx(133.333333));
+namespace {
+
+// A drawing function of chapter 7 on its cases in tests/cases/07-filled-triangles.json
+// (a 20 x 20 canvas, every pixel listed), shared with the runners for other languages.
+template <typename Draw>
+void CheckTriangleCases(const char* function, Draw draw) {
+  using cgfs::test::ToNumber;
+  const auto point = [](const nlohmann::json& P) {
+    return Point{static_cast<int>(ToNumber(P.at(0))), static_cast<int>(ToNumber(P.at(1)))};
+  };
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("07-filled-triangles.json", function)) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    Canvas canvas(size.at("width").get<int>(), size.at("height").get<int>(),
+                  cgfs::test::kCaseBackground);
+    draw(point(c.args.at("P0")), point(c.args.at("P1")), point(c.args.at("P2")),
+         cgfs::test::ToColor(c.args.at("color")), canvas);
+    CHECK_THAT(cgfs::test::DrawnPixelsAsNumbers(canvas), cgfs::test::MatchesCase(c));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("DrawWireframeTriangle: the cases of 07-filled-triangles.json", "[triangle]") {
+  CheckTriangleCases("DrawWireframeTriangle",
+                     [](Point P0, Point P1, Point P2, const Color& color, Canvas& canvas) {
+                       DrawWireframeTriangle(P0, P1, P2, color, canvas);
+                     });
+}
+
+TEST_CASE("DrawFilledTriangle: the cases of 07-filled-triangles.json", "[triangle]") {
+  CheckTriangleCases("DrawFilledTriangle",
+                     [](Point P0, Point P1, Point P2, const Color& color, Canvas& canvas) {
+                       DrawFilledTriangle(P0, P1, P2, color, canvas);
+                     });
 }
 
 TEST_CASE("DrawFilledTriangle: rows and the pixel count of the chapter's triangle", "[triangle]") {

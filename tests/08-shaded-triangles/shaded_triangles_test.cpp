@@ -1,4 +1,4 @@
-// DrawShadedTriangle (Listing 8-1), with values worked out by hand. Every later
+// DrawShadedTriangle (Listing 8-1): on its cases, and with values worked out by hand. Every later
 // rasterizer chapter keeps it unchanged and runs these tests too.
 #include <catch2/catch.hpp>
 
@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "cases.h"
 #include "pixels.h"
 #include "printing.h"
 #include "shaded_triangles.h"
@@ -32,15 +33,24 @@ constexpr Point kShaded0{-200, -250, 0.3}, kShaded1{200, 50, 0.1}, kShaded2{20, 
 
 }  // namespace
 
-TEST_CASE("Interpolate: the h lists of the chapter's triangle", "[shaded]") {
-  std::vector<double> h01 = Interpolate(-250, 0.3, 50, 0.1);
-  const std::vector<double> h12 = Interpolate(50, 0.1, 250, 1.0);
-  const std::vector<double> h02 = Interpolate(-250, 0.3, 250, 1.0);
-  h01.pop_back();
-  h01.insert(h01.end(), h12.begin(), h12.end());
-  // Row y = 0 (index 250): x02 is the left side, so h_left comes from h02.
-  CHECK(h02[250] == Approx(0.65));
-  CHECK(h01[250] == Approx(0.133333));
+// DrawShadedTriangle on the cases of tests/cases/08-shaded-triangles.json (a 20 x 20
+// canvas, every pixel and its colour listed), shared with the runners for other languages.
+TEST_CASE("DrawShadedTriangle: the cases of 08-shaded-triangles.json", "[shaded]") {
+  using cgfs::test::ToNumber;
+  const auto point = [](const nlohmann::json& P) {
+    return Point{static_cast<int>(ToNumber(P.at(0))), static_cast<int>(ToNumber(P.at(1))),
+                 ToNumber(P.at(2))};
+  };
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("08-shaded-triangles.json", "DrawShadedTriangle")) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    Canvas canvas(size.at("width").get<int>(), size.at("height").get<int>(),
+                  cgfs::test::kCaseBackground);
+    DrawShadedTriangle(point(c.args.at("P0")), point(c.args.at("P1")), point(c.args.at("P2")),
+                       cgfs::test::ToColor(c.args.at("color")), canvas);
+    CHECK_THAT(cgfs::test::DrawnPixelsAsNumbers(canvas), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("DrawShadedTriangle: pinned intensities", "[shaded]") {

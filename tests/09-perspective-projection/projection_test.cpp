@@ -1,21 +1,57 @@
-// ViewportToCanvas and ProjectVertex. Chapters 10 and 11 keep them and
-// run these tests too.
+// ViewportToCanvas and ProjectVertex, on their cases in
+// tests/cases/09-perspective-projection.json (shared with the runners for other
+// languages) and more. Chapters 10 to 15 keep them and run these tests too.
 #include <catch2/catch.hpp>
 
+#include <vector>
+
+#include "cases.h"
 #include "projection.h"
 
-TEST_CASE("ViewportToCanvas scales viewport units to pixels, truncating", "[projection]") {
-  const Canvas canvas(600, 600);
-  CHECK(ViewportToCanvas(0.5, -0.25, canvas, Viewport{}) == Point{300, -150});
-  // -0.5 and 0.5 pixels both truncate toward zero.
-  CHECK(ViewportToCanvas(-1.0 / 1200, 1.0 / 1200, canvas, Viewport{}) == Point{0, 0});
-  // A wider viewport shows more of the plane, so the same point lands nearer the centre.
-  CHECK(ViewportToCanvas(0.5, 0.5, canvas, Viewport{2, 2, 1}) == Point{150, 150});
+namespace {
+
+Canvas CanvasOfProjectionCase(const nlohmann::json& given) {
+  const nlohmann::json& size = given.at("canvas");
+  return Canvas(size.at("width").get<int>(), size.at("height").get<int>());
+}
+
+Viewport ViewportOfProjectionCase(const nlohmann::json& given) {
+  const nlohmann::json& viewport = given.at("viewport");
+  return {viewport.at("width").get<double>(), viewport.at("height").get<double>(),
+          viewport.at("d").get<double>()};
+}
+
+std::vector<double> PointAsNumbers(const Point& P) {
+  return {static_cast<double>(P.x), static_cast<double>(P.y)};
+}
+
+}  // namespace
+
+TEST_CASE("ViewportToCanvas: the cases of 09-perspective-projection.json", "[projection]") {
+  using cgfs::test::ToNumber;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("09-perspective-projection.json", "ViewportToCanvas")) {
+    INFO(c.Describe());
+    const Point P =
+        ViewportToCanvas(ToNumber(c.args.at("x")), ToNumber(c.args.at("y")),
+                         CanvasOfProjectionCase(c.given), ViewportOfProjectionCase(c.given));
+    CHECK_THAT(PointAsNumbers(P), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("ProjectVertex: the cases of 09-perspective-projection.json", "[projection]") {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("09-perspective-projection.json", "ProjectVertex")) {
+    INFO(c.Describe());
+    const Point P =
+        ProjectVertex(cgfs::test::ToVector(c.args.at("v")), CanvasOfProjectionCase(c.given),
+                      ViewportOfProjectionCase(c.given));
+    CHECK_THAT(PointAsNumbers(P), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("ProjectVertex: the corners of the demo cube", "[projection]") {
   const Canvas canvas(600, 600);
-  CHECK(ProjectVertex({-2, -0.5, 5}, canvas, Viewport{}) == Point{-240, -60});
   CHECK(ProjectVertex({-1, 0.5, 6}, canvas, Viewport{}) == Point{-100, 50});
   CHECK(ProjectVertex({-2, 0.5, 6}, canvas, Viewport{}) == Point{-200, 50});
   CHECK(ProjectVertex({-1, -0.5, 5}, canvas, Viewport{}) == Point{-120, -60});
