@@ -33,7 +33,8 @@ std::vector<FunctionCase> CasesOf(const std::string& file, const std::string& fu
                      each.value("given", nlohmann::json()),
                      each.at("args"),
                      each.at("expected"),
-                     each.at("tolerance").get<double>()};
+                     each.at("tolerance").get<double>(),
+                     each.value("compare", "")};
       found.push_back(c);
     }
   }
@@ -104,7 +105,8 @@ std::vector<double> DrawnPixelsAsNumbers(const Canvas& canvas) {
   return pixels;
 }
 
-MatchesCase::MatchesCase(const FunctionCase& c) : tolerance_(c.tolerance) {
+MatchesCase::MatchesCase(const FunctionCase& c)
+    : tolerance_(c.tolerance), truncated_(c.compare == "truncated") {
   Flatten(c.expected, expected_);
 }
 
@@ -113,7 +115,7 @@ bool MatchesCase::match(const std::vector<double>& actual) const {
     return false;
   }
   for (std::size_t i = 0; i < actual.size(); ++i) {
-    if (!Near(actual[i], expected_[i], tolerance_)) {
+    if (!Near(truncated_ ? std::trunc(actual[i]) : actual[i], expected_[i], tolerance_)) {
       return false;
     }
   }
@@ -123,7 +125,7 @@ bool MatchesCase::match(const std::vector<double>& actual) const {
 std::string MatchesCase::describe() const {
   std::ostringstream out;
   out.precision(10);
-  out << "is within " << tolerance_ << " of {";
+  out << (truncated_ ? "truncated toward zero, is within " : "is within ") << tolerance_ << " of {";
   for (std::size_t i = 0; i < expected_.size(); ++i) {
     out << (i > 0 ? ", " : " ") << expected_[i];
   }

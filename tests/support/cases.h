@@ -26,6 +26,9 @@ struct FunctionCase {
   nlohmann::json args;   // its parameters, by the book's names
   nlohmann::json expected;
   double tolerance = 0;
+  // "truncated": yours truncated toward zero before comparing, as a canvas truncates
+  // pixel coordinates; empty: as they are.
+  std::string compare;
 
   // "CanvasToViewport, case 4 of 02-basic-rays.json: <catches>; args {...}": what a
   // failure prints first (Catch's INFO).
@@ -77,6 +80,7 @@ class MatchesCase : public Catch::MatcherBase<std::vector<double>> {
  private:
   std::vector<double> expected_;
   double tolerance_;
+  bool truncated_;
 };
 
 }  // namespace cgfs::test

@@ -48,6 +48,14 @@ function decoded(value) {
   return value;
 }
 
+// A colour channel as a canvas keeps it: clamped to 0..255, rounded half up.
+function channel(value) {
+  if (!(value > 0)) return 0;
+  if (value >= 255) return 255;
+  const whole = Math.trunc(value);
+  return value - whole >= 0.5 ? whole + 1 : whole;
+}
+
 // What a drawing function puts, as a canvas of the case's size keeps it: each pixel's x
 // and y truncated toward zero (docs/conventions.md), its colour clamped to 0..255 and
 // rounded, the last colour put at a pixel kept, pixels outside the canvas dropped.
@@ -60,7 +68,7 @@ class Canvas {
     [x, y] = [Math.trunc(x), Math.trunc(y)];
     const inside = (v, size) => -Math.floor(size / 2) <= v && v < Math.floor(size / 2);
     if (!inside(x, this.width) || !inside(y, this.height)) return;
-    this.pixels.set(`${x},${y}`, [x, y, ...Array.from(color, (c) => Math.floor(Math.min(255, Math.max(0, c)) + 0.5))]);
+    this.pixels.set(`${x},${y}`, [x, y, ...Array.from(color, channel)]);
   }
   drawn() {
     return [...this.pixels.values()].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
@@ -69,7 +77,7 @@ class Canvas {
 
 const defaultAdapter = {
   vector: (value) => numbers(value),
-  point: ([x, y]) => ({ x, y }),
+  point: ([x, y, h = 1]) => ({ x, y, h }),  // h: chapter 8's intensity
   color: (value) => numbers(value),
   sphere(value, adapter) {
     return {
@@ -114,6 +122,10 @@ const defaultAdapter = {
   result(kind, value, given, adapter) {
     if (kind === "number") return [Number(value)];
     if (kind === "numbers") return Array.from(value, Number);
+    if (kind === "canvas_point") {  // as a canvas takes it: truncated toward zero
+      const [x, y] = "x" in value ? [value.x, value.y] : value;
+      return [Math.trunc(x), Math.trunc(y)];
+    }
     if (kind === "closest") {
       const [sphere, t] = value;
       return [adapter.indexOf(sphere, given, adapter), Number(t)];
@@ -212,10 +224,12 @@ function runCase(entry, kase, adapter, module) {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }
   const expected = [decoded(kase.expected)].flat(Infinity);
+  // As a canvas truncates pixel coordinates.
+  if (kase.compare === "truncated") actual = actual.map((v) => (Number.isFinite(v) ? Math.trunc(v) : v));
   const tolerance = kase.tolerance;
   const near = (a, e) => (Number.isFinite(e) ? Math.abs(a - e) <= tolerance : a === e);
   if (actual.length === expected.length && actual.every((a, i) => near(a, expected[i]))) return null;
-  return `returned ${shown(actual)}, expected ${shown(expected)}${tolerance ? ` (within ${tolerance})` : ""}`;
+  return `returned ${shown(actual)}${kase.compare ? " (truncated)" : ""}, expected ${shown(expected)}${tolerance ? ` (within ${tolerance})` : ""}`;
 }
 
 // The worker: loads the module and the adapter, runs the cases from `start` on, and

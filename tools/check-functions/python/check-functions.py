@@ -69,8 +69,18 @@ def decoded(value):
     return value
 
 
-Point = collections.namedtuple("Point", "x y")
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: chapter 8's intensity
 Vector = collections.namedtuple("Vector", "x y z")
+
+
+def channel(value):
+    """A colour channel as a canvas keeps it: clamped to 0..255, rounded half up."""
+    if not value > 0:
+        return 0
+    if value >= 255:
+        return 255
+    whole = math.trunc(value)
+    return whole + 1 if value - whole >= 0.5 else whole
 
 
 class Canvas:
@@ -85,7 +95,7 @@ class Canvas:
     def PutPixel(self, x, y, color):
         x, y = math.trunc(x), math.trunc(y)
         if -self.width // 2 <= x < self.width // 2 and -self.height // 2 <= y < self.height // 2:
-            self.pixels[(x, y)] = [math.floor(min(255, max(0, c)) + 0.5) for c in color]
+            self.pixels[(x, y)] = [channel(c) for c in color]
 
     def drawn(self):
         return [[x, y, *self.pixels[(x, y)]] for x, y in sorted(self.pixels)]
@@ -152,6 +162,9 @@ class DefaultAdapter:
             return [float(value)]
         if kind == "numbers":
             return [float(each) for each in value]
+        if kind == "canvas_point":  # as a canvas takes it: truncated toward zero
+            x, y = (value.x, value.y) if hasattr(value, "x") else value[:2]
+            return [math.trunc(x), math.trunc(y)]
         if kind == "closest":
             sphere, t = value
             return [cls.index_of(sphere, given), float(t)]
@@ -287,12 +300,14 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
     except BaseException:
         return [f"returned {value!r}, not a {returns}"]
     expected = flattened(decoded(case["expected"]))
+    if case.get("compare") == "truncated":  # as a canvas truncates pixel coordinates
+        actual = [math.trunc(each) if math.isfinite(each) else each for each in actual]
     tolerance = case["tolerance"]
     if len(actual) == len(expected) and all(
             a == e if math.isinf(e) else abs(a - e) <= tolerance for a, e in zip(actual, expected)):
         return None
-    return [f"returned {shown(actual)}, expected {shown(expected)}" +
-            (f" (within {tolerance:g})" if tolerance else "")]
+    return [f"returned {shown(actual)}" + (" (truncated)" if case.get("compare") else "") +
+            f", expected {shown(expected)}" + (f" (within {tolerance:g})" if tolerance else "")]
 
 
 def check_function(entry, adapter, module, file, time_limit):

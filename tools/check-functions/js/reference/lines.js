@@ -11,16 +11,14 @@ function configure(given) {
   if (given.PutPixel) PutPixel = given.PutPixel;
 }
 
-// Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line.
+// Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+// book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+// (docs/conventions.md).
 function Interpolate(i0, d0, i1, d1) {
   if (i0 === i1) return [d0];
   const values = [];
   const a = (d1 - d0) / (i1 - i0);
-  let d = d0;
-  for (let i = i0; i <= i1; i++) {
-    values.push(d);
-    d = d + a;
-  }
+  for (let i = i0; i <= i1; i++) values.push(d0 + a * (i - i0));
   return values;
 }
 

@@ -10,16 +10,16 @@ def PutPixel(x, y, color):
     raise NotImplementedError("your canvas goes here")
 
 
-# Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line.
+# Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+# book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+# (docs/conventions.md).
 def Interpolate(i0, d0, i1, d1):
     if i0 == i1:
         return [d0]
     values = []
     a = (d1 - d0) / (i1 - i0)
-    d = d0
     for i in range(i0, i1 + 1):
-        values.append(d)
-        d = d + a
+        values.append(d0 + a * (i - i0))
     return values
 
 
