@@ -57,14 +57,14 @@ if command -v python3 >/dev/null; then
       -e 's|IntersectRaySphere(O, D, sphere)$|IntersectRaySphereNotYet(O, D, sphere)|' \
       "$source_dir/tools/check-functions/python/reference/basic_rays.py" >"$student/mine.py"
   before=$(ls -AR "$student")
-  run python3 "$python_runner" 02 "$student/mine.py" --time-limit 0.3
+  run python3 "$python_runner" 02 "$student/mine.py" --time-limit 0.2
   check "mistakes: exit status 1" test $status -eq 1
   check "the failed case is named with what it catches" \
     says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
   check "with what was expected and what it returned" \
     says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
   check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
-  check "a case that never returns" says "^      did not return within 0.3 s"
+  check "a case that never returns" says "^      did not return within 0.2 s"
   check "a case that raises, at the student's line" says "^      raised ValueError: oops \(at mine.py:[0-9]+\)"
   check "a result of the wrong type" says "^      returned 'white', not a color"
   check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"
@@ -99,14 +99,14 @@ if command -v node >/dev/null; then
       -e 's|IntersectRaySphere, TraceRay };|TraceRay };|' \
       "$source_dir/tools/check-functions/js/reference/basic-rays.js" >"$student/basic-rays.js"
   before=$(ls -AR "$student")
-  run node "$js_runner" 02 "$student/basic-rays.js" --adapter "$student/basic-rays-adapter.js" --time-limit 0.3
+  run node "$js_runner" 02 "$student/basic-rays.js" --adapter "$student/basic-rays-adapter.js" --time-limit 0.2
   check "mistakes: exit status 1" test $status -eq 1
   check "the failed case is named with what it catches" \
     says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
   check "with what was expected and what it returned" \
     says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
   check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
-  check "a case that never returns" says "^      did not return within 0.3 s"
+  check "a case that never returns" says "^      did not return within 0.2 s"
   check "a case that throws, at the student's line" says "^      threw RangeError: oops \(at basic-rays.js:[0-9]+"
   check "a result of the wrong type" says '^      returned "white", not a color'
   check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"

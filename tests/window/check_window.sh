@@ -38,7 +38,7 @@ Xvfb -displayfd 3 -screen 0 800x700x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
 xvfb=$!
 program_pid=""
 trap 'kill $program_pid $xvfb 2>/dev/null || true' EXIT
-for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+for _ in $(seq 500); do [ -s "$work/display" ] && break; sleep 0.02; done
 export DISPLAY=":$(head -1 "$work/display")"
 echo "virtual display $DISPLAY"
 
@@ -49,16 +49,26 @@ shown=("${names[@]}")
 [ -z "$camera" ] || [[ " ${names[*]} " == *" $camera "* ]] || shown+=("$camera")
 "$program" --window "${shown[@]/#/--figure=}" --output "$work/saved" >"$work/window.txt" 2>&1 &
 program_pid=$!
-window=$(timeout 60 xdotool search --sync --name "^$chapter: " | head -1)
+# The window whose title matches $1, once it is there (polled more often than
+# xdotool's --sync does: most tests here wait only for that).
+window_named() {
+  local found=""
+  for _ in $(seq 3000); do
+    found=$(xdotool search --name "$1" 2>/dev/null | head -1) && [ -n "$found" ] && break
+    sleep 0.02
+  done
+  echo "$found"
+}
+window=$(window_named "^$chapter: ")
 xdotool windowfocus --sync "$window"
 said=0     # lines of the program's output already read
 saved() {  # waits (up to a minute) until the program says, in a new line, it saved $1
-  for _ in $(seq 600); do
+  for _ in $(seq 3000); do
     if tail -n +$((said + 1)) "$work/window.txt" | grep -q "^saved .*/$1\( \|\$\)"; then
       said=$(wc -l <"$work/window.txt")
       return 0
     fi
-    sleep 0.1
+    sleep 0.02
   done
   return 1
 }
@@ -117,7 +127,7 @@ cat "$work/window.txt"
 if [ -n "$slow" ]; then
   "$program" --window --figure "$slow" --output "$work/closed" >"$work/closed.txt" 2>&1 &
   program_pid=$!
-  window=$(timeout 60 xdotool search --sync --name "^$chapter" | head -1)
+  window=$(window_named "^$chapter")
   xdotool windowfocus --sync "$window" key s
   kill -TERM $program_pid
   status=0
