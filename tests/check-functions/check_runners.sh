@@ -39,15 +39,56 @@ run() {  # runs a runner into out.txt (stdout and stderr), its status in $status
   sed 's/^/    /' "$work/out.txt"
 }
 
+# Every reference of LANGUAGE (python or js) passes every case of its chapter (named in
+# its first line), through RUNNER... (with the reference's adapter, if it has one).
+references_pass() {
+  local language=$1 reference chapter adapter
+  shift
+  for reference in "$source_dir/tools/check-functions/$language/reference/"*; do
+    [[ $reference != *-adapter.js ]] || continue
+    chapter=$(head -1 "$reference" | grep -o 'cases: [0-9][0-9]' | cut -d' ' -f2)
+    adapter=()
+    [ ! -f "${reference%.js}-adapter.js" ] || adapter=(--adapter "${reference%.js}-adapter.js")
+    run "$@" "$chapter" "$reference" "${adapter[@]}"
+    check "$(basename "$reference"): exit status 0" test $status -eq 0
+    check "$(basename "$reference"): every function passed" \
+      bash -c '! grep -qE "FAILED|not written" "$1"' _ "$work/out.txt"
+  done
+}
+
+# The verdicts of a run on a student's chapter 2 with the mistakes planted below: y
+# scaled by the width, IntersectRaySphere missing, and a TraceRay that loops forever,
+# raises or returns "white". RAISED is how the runner words an exception at the
+# student's FILE; WHITE how it prints the wrong value.
+mistakes_reported() {
+  local raised=$1 file=$2 white=$3
+  check "mistakes: exit status 1" test $status -eq 1
+  check "the failed case is named with what it catches" \
+    says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
+  check "with what was expected and what it returned" \
+    says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
+  check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
+  check "a case that never returns" says "^      did not return within 0.2 s"
+  check "a case that raises, at the student's line" says "^      $raised: oops \(at $file:[0-9]+"
+  check "a result of the wrong type" says "^      returned $white, not a color"
+}
+
+# A module that does not load, and a chapter without cases: one line each, exit 1 and 2.
+bad_input_reported() {  # RUNNER... BROKEN_MODULE GOOD_MODULE
+  local good=${*: -1} broken=${*: -2:1}
+  local runner=("${@:1:$#-2}")
+  run "${runner[@]}" 02 "$broken"
+  check "a module that does not load: exit status 1, one line" \
+    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
+  check "it names the error and the line" says "does not load: [A-Za-z]*Error: .*$(basename "$broken")"
+  run "${runner[@]}" 99 "$good"
+  check "a chapter without cases: exit status 2, one line" \
+    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+}
+
 if command -v python3 >/dev/null; then
   echo "== Python: the references pass"
-  for reference in "$source_dir"/tools/check-functions/python/reference/*.py; do
-    chapter=$(grep -o '^# cases: [0-9][0-9]' "$reference" | cut -d' ' -f3)
-    run python3 "$python_runner" "$chapter" "$reference"
-    check "$(basename "$reference"): exit status 0" test $status -eq 0
-    check "$(basename "$reference"): every function passed" bash -c '! grep -qE "FAILED|not written" "$1"' _ "$work/out.txt"
-  done
-
+  references_pass python python3 "$python_runner"
   echo "== Python: a student's chapter 2 with mistakes"
   student=$work/python-student
   mkdir -p "$student"
@@ -58,38 +99,18 @@ if command -v python3 >/dev/null; then
       "$source_dir/tools/check-functions/python/reference/basic_rays.py" >"$student/mine.py"
   before=$(ls -AR "$student")
   run python3 "$python_runner" 02 "$student/mine.py" --time-limit 0.2
-  check "mistakes: exit status 1" test $status -eq 1
-  check "the failed case is named with what it catches" \
-    says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
-  check "with what was expected and what it returned" \
-    says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
-  check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
-  check "a case that never returns" says "^      did not return within 0.2 s"
-  check "a case that raises, at the student's line" says "^      raised ValueError: oops \(at mine.py:[0-9]+\)"
-  check "a result of the wrong type" says "^      returned 'white', not a color"
-  check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"
+  mistakes_reported "raised ValueError" mine.py "'white'"
   echo "import no_such_module" >"$student/broken.py"
-  run python3 "$python_runner" 02 "$student/broken.py"
-  check "a module that does not load: exit status 1, one line" \
-    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
-  check "it names the error and the line" says "does not load: ModuleNotFoundError: .* \(at broken.py:1\)"
-  run python3 "$python_runner" 99 "$student/mine.py"
-  check "a chapter without cases: exit status 2, one line" \
-    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+  bad_input_reported python3 "$python_runner" "$student/broken.py" "$student/mine.py"
+  check "the student's folder has only what the test put there" \
+    test "$before" = "$(ls -AR "$student" | grep -v '^broken.py$')"
 else
   echo "SKIPPED: no python3 to run the Python runner (CI installs it: scripts/setup)"
 fi
 
 if command -v node >/dev/null; then
   echo "== JavaScript: the references pass"
-  for reference in "$source_dir"/tools/check-functions/js/reference/*.js; do
-    [[ $reference != *-adapter.js ]] || continue
-    chapter=$(grep -o '^// cases: [0-9][0-9]' "$reference" | cut -d' ' -f3)
-    run node "$js_runner" "$chapter" "$reference" --adapter "${reference%.js}-adapter.js"
-    check "$(basename "$reference"): exit status 0" test $status -eq 0
-    check "$(basename "$reference"): every function passed" bash -c '! grep -qE "FAILED|not written" "$1"' _ "$work/out.txt"
-  done
-
+  references_pass js node "$js_runner"
   echo "== JavaScript: a student's chapter 2 with mistakes"
   student=$work/js-student
   mkdir -p "$student"
@@ -100,23 +121,11 @@ if command -v node >/dev/null; then
       "$source_dir/tools/check-functions/js/reference/basic-rays.js" >"$student/basic-rays.js"
   before=$(ls -AR "$student")
   run node "$js_runner" 02 "$student/basic-rays.js" --adapter "$student/basic-rays-adapter.js" --time-limit 0.2
-  check "mistakes: exit status 1" test $status -eq 1
-  check "the failed case is named with what it catches" \
-    says "^    case 4 of 02-basic-rays.json: y scaled by the canvas's width instead of its height"
-  check "with what was expected and what it returned" \
-    says "returned \[0.75, -0.3333333333, 1\], expected \[0.75, -0.5, 1\]"
-  check "a function not written yet" says "^  IntersectRaySphere +not written yet \(5 cases\)"
-  check "a case that never returns" says "^      did not return within 0.2 s"
-  check "a case that throws, at the student's line" says "^      threw RangeError: oops \(at basic-rays.js:[0-9]+"
-  check "a result of the wrong type" says '^      returned "white", not a color'
-  check "the student's folder is left as it was" test "$before" = "$(ls -AR "$student")"
+  mistakes_reported "threw RangeError" basic-rays.js '"white"'
   echo 'throw new Error("at load")' >"$student/broken.js"
-  run node "$js_runner" 02 "$student/broken.js"
-  check "a module that does not load: exit status 1, one line" \
-    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
-  run node "$js_runner" 99 "$student/basic-rays.js"
-  check "a chapter without cases: exit status 2, one line" \
-    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+  bad_input_reported node "$js_runner" "$student/broken.js" "$student/basic-rays.js"
+  check "the student's folder has only what the test put there" \
+    test "$before" = "$(ls -AR "$student" | grep -v '^broken.js$')"
 else
   echo "SKIPPED: no node to run the JavaScript runner (CI installs nodejs: scripts/setup)"
 fi
