@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "cases.h"
 #include "cgfs/image_io.h"
 #include "checks.h"
 #include "golden.h"
@@ -17,17 +18,28 @@ using cgfs::test::GoldenFile;
 using cgfs::test::IsSameImageAs;
 using cgfs::test::RenderFigureNamed;
 
-TEST_CASE("CameraRayDirection turns the chapter-2 direction with the camera", "[equations]") {
-  const Canvas canvas(600, 600);
-  const Scene scene = SceneCamera();
-  // The centre of the viewport, (0, 0, 1), turned 45 degrees about Y: towards -X and +Z.
-  CheckNear(CameraRayDirection(0, 0, canvas, scene), {-0.7071, 0, 0.7071});
-  // Y is the axis of the turn: the top of the viewport keeps its height.
-  CheckNear(CameraRayDirection(0, 300, canvas, scene), {-0.7071, 0.5, 0.7071});
-  // The default camera leaves directions as they are.
-  const Scene plain = SceneReflections();
-  CHECK(CameraRayDirection(150, -75, canvas, plain) ==
-        CanvasToViewport(150, -75, canvas, plain.viewport));
+TEST_CASE("CameraRayDirection: the cases of 05-raytracer-extensions.json", "[equations]") {
+  using cgfs::test::ToNumber;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("05-raytracer-extensions.json", "CameraRayDirection")) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    const nlohmann::json& viewport = c.given.at("viewport");
+    const nlohmann::json& camera = c.given.at("camera");
+    Scene scene;
+    scene.viewport = {ToNumber(viewport.at("width")), ToNumber(viewport.at("height")),
+                      ToNumber(viewport.at("d"))};
+    scene.camera.position = cgfs::test::ToVector(camera.at("position"));
+    for (int row = 0; row < 3; ++row) {  // the case's rows; GLM keeps columns
+      for (int column = 0; column < 3; ++column) {
+        scene.camera.rotation[column][row] = ToNumber(camera.at("rotation").at(row).at(column));
+      }
+    }
+    const Canvas canvas(size.at("width").get<int>(), size.at("height").get<int>());
+    CHECK_THAT(cgfs::test::AsNumbers(CameraRayDirection(ToNumber(c.args.at("x")),
+                                                        ToNumber(c.args.at("y")), canvas, scene)),
+               cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("pinned pixels of Figure 5-1, the camera at (3, 0, 1) turned 45 degrees", "[figures]") {

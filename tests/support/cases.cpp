@@ -76,6 +76,9 @@ namespace {
 
 // Every number of a case's expected value, lists within lists flattened in order.
 void Flatten(const nlohmann::json& value, std::vector<double>& numbers) {
+  if (value.is_null()) {  // none: a function that returns nothing here
+    return;
+  }
   if (value.is_array()) {
     for (const nlohmann::json& each : value) {
       Flatten(each, numbers);

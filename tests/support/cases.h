@@ -4,6 +4,7 @@
 // one set of cases for both.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +62,10 @@ inline std::vector<double> AsNumbers(double value) {
 }
 inline std::vector<double> AsNumbers(const std::vector<double>& values) {
   return values;
+}
+// None (an empty optional) is no numbers, as the cases write it (null).
+inline std::vector<double> AsNumbers(const std::optional<Vec3>& value) {
+  return value ? AsNumbers(*value) : std::vector<double>{};
 }
 
 // The background of a canvas that a case's function draws on: a colour no case draws.

@@ -115,6 +115,9 @@ const defaultAdapter = {
       globalThis.scene = adapter.scene(given.scene, adapter);
       globalThis.BACKGROUND_COLOR = globalThis.scene.background_color;
     }
+    if (given.camera) {  // chapter 5: its rotation a 3x3 matrix, row by row
+      globalThis.camera = { position: adapter.vector(given.camera.position), rotation: given.camera.rotation };
+    }
   },
   // Your function's result as the list of numbers the case expects: a number, a vector
   // or colour, two roots, or ClosestIntersection's sphere (by its index in the case's
@@ -126,6 +129,7 @@ const defaultAdapter = {
       const [x, y] = "x" in value ? [value.x, value.y] : value;
       return [Math.trunc(x), Math.trunc(y)];
     }
+    if (kind === "vector_or_none") return value === null || value === undefined ? [] : adapter.result("vector", value, given, adapter);
     if (kind === "closest") {
       const [sphere, t] = value;
       return [adapter.indexOf(sphere, given, adapter), Number(t)];
@@ -223,7 +227,7 @@ function runCase(entry, kase, adapter, module) {
   } catch {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }
-  const expected = [decoded(kase.expected)].flat(Infinity);
+  const expected = kase.expected === null ? [] : [decoded(kase.expected)].flat(Infinity);
   // As a canvas truncates pixel coordinates.
   if (kase.compare === "truncated") actual = actual.map((v) => (Number.isFinite(v) ? Math.trunc(v) : v));
   const tolerance = kase.tolerance;

@@ -152,6 +152,10 @@ class DefaultAdapter:
         if "scene" in given:
             module.scene = cls.scene(given["scene"])
             module.BACKGROUND_COLOR = module.scene.background_color
+        if "camera" in given:  # chapter 5: its rotation a 3x3 matrix, row by row
+            module.camera = types.SimpleNamespace(
+                position=cls.vector(given["camera"]["position"]),
+                rotation=tuple(tuple(numbers(row)) for row in given["camera"]["rotation"]))
 
     @classmethod
     def result(cls, kind, value, given):
@@ -165,6 +169,8 @@ class DefaultAdapter:
         if kind == "canvas_point":  # as a canvas takes it: truncated toward zero
             x, y = (value.x, value.y) if hasattr(value, "x") else value[:2]
             return [math.trunc(x), math.trunc(y)]
+        if kind == "vector_or_none":
+            return [] if value is None else cls.result("vector", value, given)
         if kind == "closest":
             sphere, t = value
             return [cls.index_of(sphere, given), float(t)]
@@ -245,6 +251,8 @@ def on_alarm(signum, frame):
 
 def flattened(value):
     """Every number of a case's expected value, lists within lists flattened in order."""
+    if value is None:  # none: a function that returns nothing here
+        return []
     if isinstance(value, list):
         return [n for each in value for n in flattened(each)]
     return [number(value)]
