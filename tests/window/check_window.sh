@@ -32,14 +32,26 @@ if ! command -v Xvfb >/dev/null || ! command -v xdotool >/dev/null; then
   exit $failed
 fi
 
-# A display of its own, numbered by Xvfb; stopped on the way out, with the program.
-exec 3>"$work/display"
-Xvfb -displayfd 3 -screen 0 800x700x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
-xvfb=$!
-program_pid=""
+# A display of its own, numbered by Xvfb, and answering; stopped on the way out, with
+# the program. Two tests starting Xvfb at once can race for a number: a display that
+# does not answer within two seconds is started again.
+xvfb="" program_pid=""
 trap 'kill $program_pid $xvfb 2>/dev/null || true' EXIT
-for _ in $(seq 500); do [ -s "$work/display" ] && break; sleep 0.02; done
-export DISPLAY=":$(head -1 "$work/display")"
+start_display() {
+  : >"$work/display"
+  Xvfb -displayfd 3 -screen 0 800x700x24 -nolisten tcp 3>"$work/display" >>"$work/xvfb.log" 2>&1 &
+  xvfb=$!
+  for _ in $(seq 100); do
+    if grep -q '^[0-9][0-9]*$' "$work/display" 2>/dev/null; then
+      export DISPLAY=":$(head -1 "$work/display")"
+      xdotool getdisplaygeometry >/dev/null 2>&1 && return 0
+    fi
+    sleep 0.02
+  done
+  kill $xvfb 2>/dev/null || true
+  return 1
+}
+start_display || start_display || start_display || { fail "Xvfb did not start"; exit 1; }
 echo "virtual display $DISPLAY"
 
 # The chapter's first two figures, then the camera figure unless it is one of them.
@@ -60,6 +72,11 @@ window_named() {
   echo "$found"
 }
 window=$(window_named "^$chapter: ")
+if [ -z "$window" ]; then
+  cat "$work/window.txt"
+  fail "no window titled '$chapter: ...' within a minute"
+  exit 1
+fi
 xdotool windowfocus --sync "$window"
 said=0     # lines of the program's output already read
 saved() {  # waits (up to a minute) until the program says, in a new line, it saved $1
@@ -128,6 +145,7 @@ if [ -n "$slow" ]; then
   "$program" --window --figure "$slow" --output "$work/closed" >"$work/closed.txt" 2>&1 &
   program_pid=$!
   window=$(window_named "^$chapter")
+  [ -n "$window" ] || { fail "no window to close"; exit 1; }
   xdotool windowfocus --sync "$window" key s
   kill -TERM $program_pid
   status=0
