@@ -32,26 +32,34 @@ if ! command -v Xvfb >/dev/null || ! command -v xdotool >/dev/null; then
   exit $failed
 fi
 
-# A display of its own, numbered by Xvfb, and answering; stopped on the way out, with
-# the program. Two tests starting Xvfb at once can race for a number: a display that
-# does not answer within two seconds is started again.
+# A display of its own, and answering; stopped on the way out, with the program. Its
+# number comes from this script's process id, so that tests run side by side take
+# different ones (Xvfb -displayfd can hand two servers started at once the same
+# number); one in use makes Xvfb exit, and the next is tried.
 xvfb="" program_pid=""
 trap 'kill $program_pid $xvfb 2>/dev/null || true' EXIT
-start_display() {
-  : >"$work/display"
-  Xvfb -displayfd 3 -screen 0 800x700x24 -nolisten tcp 3>"$work/display" >>"$work/xvfb.log" 2>&1 &
+start_display() {  # NUMBER
+  Xvfb ":$1" -screen 0 800x700x24 -nolisten tcp >>"$work/xvfb.log" 2>&1 &
   xvfb=$!
-  for _ in $(seq 100); do
-    if grep -q '^[0-9][0-9]*$' "$work/display" 2>/dev/null; then
-      export DISPLAY=":$(head -1 "$work/display")"
-      xdotool getdisplaygeometry >/dev/null 2>&1 && return 0
+  export DISPLAY=":$1"
+  for _ in $(seq 250); do
+    kill -0 $xvfb 2>/dev/null || return 1  # the number was taken
+    # Answering, and ours: the lock of the number names our server.
+    if xdotool getdisplaygeometry >/dev/null 2>&1 &&
+       [ "$( (tr -d ' \n' <"/tmp/.X$1-lock") 2>/dev/null)" = "$xvfb" ]; then
+      return 0
     fi
     sleep 0.02
   done
   kill $xvfb 2>/dev/null || true
   return 1
 }
-start_display || start_display || start_display || { fail "Xvfb did not start"; exit 1; }
+number=$((100 + $$ % 800))
+for _ in 1 2 3 4 5; do
+  start_display $number && break
+  number=$((number + 1))
+done
+kill -0 "$xvfb" 2>/dev/null || { fail "Xvfb did not start"; exit 1; }
 echo "virtual display $DISPLAY"
 
 # The chapter's first two figures, then the camera figure unless it is one of them.
@@ -65,7 +73,7 @@ program_pid=$!
 # xdotool's --sync does: most tests here wait only for that).
 window_named() {
   local found=""
-  for _ in $(seq 3000); do
+  for _ in $(seq 1000); do
     found=$(xdotool search --name "$1" 2>/dev/null | head -1) && [ -n "$found" ] && break
     sleep 0.02
   done
@@ -74,7 +82,7 @@ window_named() {
 window=$(window_named "^$chapter: ")
 if [ -z "$window" ]; then
   cat "$work/window.txt"
-  fail "no window titled '$chapter: ...' within a minute"
+  fail "no window titled '$chapter: ...' within 20 seconds"
   exit 1
 fi
 xdotool windowfocus --sync "$window"
