@@ -42,9 +42,10 @@ struct Sdl {
                                    : "";
     if (driver.empty() || (!asked && (driver == "offscreen" || driver == "dummy"))) {
       const char* display = std::getenv("DISPLAY");
+      const std::string why = displays.empty() && !asked ? "" : std::string(": ") + SDL_GetError();
       SDL_Quit();
       throw Error(std::string("--window: no display to open a window on (DISPLAY is ") +
-                  (display != nullptr ? display : "not set") + ")");
+                  (display != nullptr ? display : "not set") + why + ")");
     }
   }
   ~Sdl() {
