@@ -79,15 +79,16 @@ window_named() {
   done
   echo "$found"
 }
-# Under the full test run's load SDL has, once in a few runs, not opened a display that
-# answered xdotool: the program said so in one line (with SDL's reason) and is started
-# once more.
-for attempt in 1 2; do
+# Under the full test run's load SDL has, for a few of the windows of a run, not opened a
+# display that had answered xdotool ("x11 not available"; never seen when run alone):
+# the program said so in one line and is started again, up to three times.
+for attempt in 1 2 3; do
   "$program" --window "${shown[@]/#/--figure=}" --output "$work/saved" >"$work/window.txt" 2>&1 &
   program_pid=$!
   window=$(window_named "^$chapter: ")
   [ -z "$window" ] && grep -q "no display to open a window on" "$work/window.txt" || break
   echo "attempt $attempt: $(cat "$work/window.txt")"
+  sleep 0.2
 done
 if [ -z "$window" ]; then
   cat "$work/window.txt"
