@@ -9,8 +9,8 @@ tests run), the runner calls your function by the book's name with the book's
 parameters and prints whether it passed, failed (with the inputs, what was expected,
 what yours returned and the mistake the case catches) or is not written yet.
 
-The book's data reach your code as the default adapter below makes them: vectors and
-colours as tuples (x, y, z), spheres and lights as objects with the book's fields
+The book's data reach your code as the default adapter below makes them: vectors as
+named tuples (x, y, z), points as (x, y, h), colours as tuples, spheres and lights as objects with the book's fields
 (sphere.center, light.type == "point"), and the book's globals (Cw, Ch, Vw, Vh, d,
 scene, BACKGROUND_COLOR) set on your module before each case. An adapter file of yours
 may define any of the functions of DefaultAdapter (same names, as plain functions) to
@@ -38,6 +38,10 @@ CASES_DIR = Path(__file__).resolve().parents[3] / "tests" / "cases"
 
 class Usage(Exception):
     """A wrong command line: one line, exit status 2."""
+
+
+class LoadError(Exception):
+    """The student's module or adapter does not load: one line, exit status 1."""
 
 
 class TimeLimit(Exception):
@@ -208,17 +212,13 @@ def load(path, what):
     except TimeLimit:
         raise LoadError(f"{what} {path} does not load: still running after 60 s") from None
     except BaseException as error:  # whatever their file does, one line
-        raise LoadError(f"{what} {path} does not load: {Where(error)}") from None
+        raise LoadError(f"{what} {path} does not load: {one_line(error)}") from None
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
     return module
 
 
-class LoadError(Exception):
-    pass
-
-
-def Where(error):
+def one_line(error):
     """An exception in one line, at the last line of the student's code it went through."""
     frames = [frame for frame in traceback.extract_tb(error.__traceback__)
               if not frame.filename.startswith(str(Path(__file__).resolve().parent))]
@@ -291,14 +291,14 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         adapter.setup(module, given)
         args = [convert(adapter, kind, decoded(case["args"][name])) for name, kind in parameters]
     except BaseException as error:
-        return [f"your adapter failed to build the inputs: {Where(error)}"]
+        return [f"your adapter failed to build the inputs: {one_line(error)}"]
     signal.setitimer(signal.ITIMER_REAL, time_limit)
     try:
         value = function(*args)
     except TimeLimit:
         return [f"did not return within {time_limit:g} s"]
     except BaseException as error:
-        return [f"raised {Where(error)}"]
+        return [f"raised {one_line(error)}"]
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
     if canvas:
