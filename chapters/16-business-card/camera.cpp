@@ -13,7 +13,8 @@ constexpr double kCardPixelStep = 0.002;
 constexpr double kCardAperture = 99;
 
 // Turns `forward` by `degrees` towards `side`, and `side` with it (both unit vectors at
-// right angles): a rotation in their plane. No angle leaves both exactly as they were.
+// right angles): a rotation in their plane. An angle of 0 leaves both exactly as they
+// were (cos 0 = 1, sin 0 = 0), so the card's own view is its own vectors.
 void Turn(glm::dvec3& forward, glm::dvec3& side, double degrees) {
   const double cos = std::cos(glm::radians(degrees));
   const double sin = std::sin(glm::radians(degrees));

@@ -65,14 +65,15 @@ Color ToColor(const nlohmann::json& value) {
   return {ToNumber(value.at(0)), ToNumber(value.at(1)), ToNumber(value.at(2))};
 }
 
+namespace {
+
+// Whether `actual` is within `tolerance` of `expected` (infinities equal themselves).
 bool Near(double actual, double expected, double tolerance) {
   if (std::isinf(expected)) {
     return actual == expected;
   }
   return std::abs(actual - expected) <= tolerance;
 }
-
-namespace {
 
 // Every number of a case's expected value, lists within lists flattened in order.
 void Flatten(const nlohmann::json& value, std::vector<double>& numbers) {

@@ -47,9 +47,6 @@ Vec3 ToVector(const nlohmann::json& value);
 // [r, g, b], 0 to 255.
 Color ToColor(const nlohmann::json& value);
 
-// Whether `actual` is within `tolerance` of `expected` (infinities equal themselves).
-bool Near(double actual, double expected, double tolerance);
-
 // What a function returned, as the list of numbers the case expects.
 inline std::vector<double> AsNumbers(const Vec3& value) {
   return {value.x, value.y, value.z};

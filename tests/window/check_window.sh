@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # A chapter's --window as a person uses it, under a virtual display (Xvfb) with keys
 # pressed by xdotool: the window opens on the chapter's first figure; S saves it, byte
-# for byte its golden image; Right shows the second (or the only one again), whose
-# saved file is its golden image too; the title names the chapter, the figure and the drawing's time. With a
-# CAMERA_FIGURE (a figure whose camera moves), the window then shows that figure and
-# moves its camera forward twice, turns it left twice (Up Up Q Q) and back to the right
-# by dragging the mouse 20 pixels: the view it prints is 0,0,0.5,5,0, and the figure it saves is byte for byte what the program draws for
-# that view (--view), and not the unmoved one. Esc closes the window, exit status 0.
-# Without a display --window says so in one line, exit status 2. Leaves screenshots in
-# WORK_DIR. Skipped without Xvfb and xdotool (CI installs them: scripts/setup).
+# for byte its golden image; Right shows the second (or the only one again), whose saved
+# file is its golden image too; the title names the chapter, the figure and the
+# drawing's time. With a CAMERA_FIGURE (a figure whose camera moves), the window then
+# shows that figure, moves its camera forward twice, turns it left twice (Up Up Q Q)
+# and back to the right by dragging the mouse 20 pixels: the view it prints is
+# 0,0,0.5,5,0, and the figure it saves is byte for byte what the program draws for that
+# view (--view), and not the unmoved one. With a SLOW_FIGURE, the window is closed while
+# it draws that figure (below). Esc closes the window, exit status 0. Without a display
+# --window says so in one line, exit status 2. Leaves screenshots in WORK_DIR. Skipped
+# without Xvfb and xdotool (CI installs them: scripts/setup).
 # Usage: check_window.sh PROGRAM GOLDEN_DIR WORK_DIR [CAMERA_FIGURE [SLOW_FIGURE]]
 set -euo pipefail
 program=$1 golden=$2 work=$3 camera=${4:-} slow=${5:-}
