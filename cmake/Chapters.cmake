@@ -117,10 +117,18 @@ function(cgfs_add_chapter chapter)
     # Headers the student has not copied are copies of ours, in a folder searched
     # after theirs. Copies, not our folder itself: our scenes.h must find their
     # raytracer.h, not the one beside it.
+    # A copy is rewritten only when ours changed (configure_file leaves an equal file
+    # alone), so that configuring again does not recompile what includes it.
     set(fallback "${CMAKE_BINARY_DIR}/our-headers/${chapter}")
-    file(REMOVE_RECURSE "${fallback}")
     file(GLOB ours "${PROJECT_SOURCE_DIR}/chapters/${chapter}/*.h")
     file(GLOB theirs CONFIGURE_DEPENDS "${dir}/*.h")  # a new header of theirs reconfigures
+    file(GLOB copies "${fallback}/*.h")
+    foreach(copy IN LISTS copies)  # a copy of a header they now have, or we no longer
+      cmake_path(GET copy FILENAME name)
+      if(EXISTS "${dir}/${name}" OR NOT EXISTS "${PROJECT_SOURCE_DIR}/chapters/${chapter}/${name}")
+        file(REMOVE "${copy}")
+      endif()
+    endforeach()
     foreach(header IN LISTS ours)
       cmake_path(GET header FILENAME name)
       if(NOT EXISTS "${dir}/${name}")

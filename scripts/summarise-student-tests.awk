@@ -8,7 +8,7 @@
 
 # For a failed test, the reason to print under it: the image diagnosis ("your image
 # is ours moved one row down") or else its numbers, and its first wrong pixel; else the
-# first failed check with what its values were.
+# first failed check with what its values were, and what it was given (INFO).
 function trimmed(text) {
   sub(/^ +/, "", text)
   sub(/ +$/, "", text)
@@ -27,8 +27,14 @@ FNR == NR {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)
   } else if ($0 ~ /^ *first differing pixel: / && !(current in pixel_of)) {
     pixel_of[current] = trimmed($0)  # an image's first wrong pixel: where, yours, ours
+  } else if (stage == 6 && $0 ~ /^with messages?:$/) {
+    stage = 7
+  } else if (stage == 7 && $0 ~ /^  /) {
+    # what the check was given (a case's "TraceRay, case 5 of 02-basic-rays.json: what
+    # it catches; args ..."), over as many lines as Catch wrapped it to
+    given_of[current] = given_of[current] (given_of[current] == "" ? "" : " ") trimmed($0)
   } else if (current in reason_of) {
-    # one reason a test is enough
+    stage = 0  # one reason a test is enough
   } else if ($0 ~ /^ *diagnosis: /) {
     reason_of[current] = trimmed($0)
   } else if ($0 ~ /: FAILED:$/) {
@@ -54,7 +60,7 @@ FNR == NR {
     stage = 3
   } else if (stage == 3 && $0 ~ /^  /) {
     reason_of[current] = check_of[current] "  is  " trimmed($0)
-    stage = 0
+    stage = 6
   }
   next
 }
@@ -127,6 +133,9 @@ match($0, /Test +#[0-9]+: /) {
     } else if (name in reason_of) {
       reason_given[chapter, reason_of[name]] = 1
       failures[key] = failures[key] "        " reason_of[name] "\n"
+      if (name in given_of) {
+        failures[key] = failures[key] "        " given_of[name] "\n"
+      }
     } else if (name in message_of) {
       failures[key] = failures[key] "        " message_of[name] "\n"
     }

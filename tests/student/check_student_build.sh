@@ -39,10 +39,23 @@ check() {  # description, then a command that must succeed
 }
 run() {  # runs the documented command, output in $work/out.txt, status in $status
   status=0
+  command="scripts/test-student $*"
   scripts/test-student "$@" >"$work/out.txt" 2>&1 || status=$?
   sed 's/^/    /' "$work/out.txt"
 }
 says() { grep -qE "$1" "$work/out.txt"; }
+# The example of docs/students.md under the line "<!-- example: NAME -->" is the last
+# run, command and output, with the student's home as ~ in the command and /home/you in
+# the output, this copy of the repository as ~/cgfs, and the compiler's quotes as '.
+shows_example() {
+  local name=$1
+  awk -v mark="<!-- example: $name -->" '$0 == mark { found = 1; next }
+    found && /^```/ { if (inside) exit; inside = 1; next } inside { print }' \
+    "$source_dir/docs/students.md" | sed "s/[‘’]/'/g" >"$work/example-$name.docs"
+  { echo "\$ ${command//$HOME/\~}"; sed -e "s|$HOME|/home/you|g" -e "s|$work/repo|~/cgfs|g" \
+      -e "s/[‘’]/'/g" "$work/out.txt"; } >"$work/example-$name.run"
+  [ -s "$work/example-$name.docs" ] && diff "$work/example-$name.docs" "$work/example-$name.run"
+}
 
 echo "== the documented layout: raytracer.h, raytracer.cpp, scenes.cpp"
 cp "$ours/raytracer.h" "$ours/raytracer.cpp" "$ours/scenes.cpp" "$student/"
@@ -56,26 +69,27 @@ check "render leaves out/ alone" test ! -e out
 echo "== half written: only CanvasToViewport and IntersectRaySphere"
 awk '/^\/\/ Listing 2-4/ { exit } { print }' "$ours/raytracer.cpp" >"$student/raytracer.cpp"
 rm "$student/scenes.cpp"
-run ~/my-cgfs
+run ~/my-cgfs 02
 check "a half-written chapter passes what is written" test $status -eq 0
 check "CanvasToViewport passes" says "^  CanvasToViewport +passed"
 check "IntersectRaySphere passes" says "^  IntersectRaySphere +passed"
 check "TraceRay is not written yet" says "^  TraceRay +not written yet"
 check "Figures is not written yet" says "^  Figures +not written yet"
+check "docs/students.md shows this run" shows_example half-written
 
-echo "== a mistake: b = <CO,D> instead of 2<CO,D>"
+echo "== a mistake: TraceRay looks only at t1, the larger root"
 cp "$ours/raytracer.cpp" "$ours/scenes.cpp" "$student/"
-sed -i 's/const double b = 2 \* glm::dot(CO, D);/const double b = glm::dot(CO, D);/' \
-  "$student/raytracer.cpp"
-check "the mistake is planted" grep -q "const double b = glm::dot(CO, D);" "$student/raytracer.cpp"
+sed -i '/if (t_min <= t2 && t2 <= t_max && t2 < closest_t) {/,/^    }/d' "$student/raytracer.cpp"
+check "the mistake is planted" bash -c '! grep -q "closest_t = t2" "$1"' _ "$student/raytracer.cpp"
 run ~/my-cgfs 02
 check "the mistake fails" test $status -eq 1
-check "the failing function is named" says "^  IntersectRaySphere +FAILED"
+check "the failing function is named" says "^  TraceRay +FAILED"
 check "the failure page is announced" says "^images of the failed figures: "
 check "the failed check and its values are on the console" says "^        (CHECK|REQUIRE).*  is  "
 check "a failed figure's numbers are on the console" says "^        FAIL: [0-9]+ of 360000 pixels differ"
 check "a failed figure's first wrong pixel is on the console" \
   says "^        first differing pixel: \([0-9]+, [0-9]+\) = canvas \(-?[0-9]+, -?[0-9]+\): yours \("
+check "docs/students.md shows this run" shows_example worked
 
 echo "== the mistake fixed"
 cp "$ours/raytracer.cpp" "$student/"
@@ -100,6 +114,7 @@ check "the header's is named at the student's line, with both signatures" \
 check "the run says why it fails" says "the run fails until they match"
 check "the definition's tests say so, with both signatures" \
   says "threw: written with another signature: yours is RenderScene\(.*, int\), the tests need RenderScene\("
+check "docs/students.md shows this run" shows_example signatures
 cp "$ours/raytracer.h" "$ours/raytracer.cpp" "$student/"
 
 echo "== moving on: chapter 02 copied forward as 03, its headers not updated"
@@ -109,23 +124,27 @@ check "a copied-forward header unlike ours fails" test $status -eq 1
 check "the missing function is named" says "^03-light: ComputeLighting is not declared in your headers"
 check "the copied-forward header is named" \
   says "^03-light: your raytracer.h is your chapter 02-basic-rays's, and this chapter changes it"
+check "docs/students.md shows this run" shows_example moving-on
 rm -r ~/my-cgfs/03-light
 
-echo "== a compile error in chapter 02, beside a faithful chapter 06"
-cp -r "$source_dir/chapters/06-lines" ~/my-cgfs/
-echo 'int broken = ;' >>"$student/raytracer.cpp"
+echo "== a compile error in chapter 03, beside the faithful chapter 02"
+mkdir ~/my-cgfs/03-light
+cp "$source_dir/chapters/03-light/raytracer.h" "$source_dir/chapters/03-light/raytracer.cpp" \
+  "$source_dir/chapters/03-light/scenes.cpp" ~/my-cgfs/03-light/
+echo 'int broken = ;' >>~/my-cgfs/03-light/raytracer.cpp
 run ~/my-cgfs
 check "a compile error fails" test $status -eq 1
 check "the chapter that does not compile is named" \
-  says "^02-basic-rays: does not compile, so none of its tests ran"
+  says "^03-light: does not compile, so none of its tests ran"
 check "its first error is given, at the student's line" \
-  says "^      .*/my-cgfs/02-basic-rays/raytracer.cpp:[0-9]+:[0-9]+: error: "
-check "the other chapter is tested all the same" says "^06-lines: [0-9]+ passed, 0 failed"
+  says "^      .*/my-cgfs/03-light/raytracer.cpp:[0-9]+:[0-9]+: error: "
+check "the other chapter is tested all the same" says "^$chapter: [0-9]+ passed, 0 failed"
+check "docs/students.md shows this run" shows_example compile-error
 check "ctest after the failed build does not pass" \
   bash -c '! ctest --test-dir build-student >/dev/null 2>&1'
-run ~/my-cgfs 06
-check "chapter 06 asked for alone passes: the broken 02 is not even built" test $status -eq 0
-rm -r ~/my-cgfs/06-lines
+run ~/my-cgfs 02
+check "chapter 02 asked for alone passes: the broken 03 is not even built" test $status -eq 0
+rm -r ~/my-cgfs/03-light
 
 echo "== folders that are not a student's chapters"
 mkdir -p ~/misnamed/02-basic-ray
