@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "cases.h"
 #include "checks.h"
 #include "scenes.h"
 
@@ -64,18 +65,21 @@ TEST_CASE("rotating then translating is not translating then rotating", "[transf
   CheckNear(cgfs::ToCartesian(R * T * Point4({0, 0, 1})), {-6, 0, 0});  // Figure 10-5
 }
 
-TEST_CASE("MakeCameraMatrix: the camera matrix of figure 10-10, by its action on vectors",
+TEST_CASE("MakeCameraMatrix: the cases of 10-scene-rendering.json", "[transform]") {
+  // The first is the camera of figure 10-10, worked out by hand:
+  // [[0.866025, 0, -0.5, 3.598076], [0, 1, 0, -1], [0.5, 0, 0.866025, -0.232051], [0, 0, 0, 1]].
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("10-scene-rendering.json", "MakeCameraMatrix")) {
+    INFO(c.Describe());
+    const glm::dmat4 M = MakeCameraMatrix(cgfs::test::ToVector(c.args.at("position")),
+                                          cgfs::test::ToMatrix(c.args.at("orientation")));
+    CHECK_THAT(cgfs::test::AsNumbers(M), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("MakeCameraMatrix: the camera's own position lands on the origin of camera space",
           "[transform]") {
   const glm::dmat4 M = MakeCameraMatrix({-3, 1, 2}, MakeOYRotationMatrix(-30));
-  // Its rows, worked out by hand: [[0.866025, 0, -0.5, 3.598076], [0, 1, 0, -1],
-  //                    [0.5, 0, 0.866025, -0.232051], [0, 0, 0, 1]]; its columns are
-  // what it does to the axes and to the origin.
-  CheckNear(Vec3(M * glm::dvec4(1, 0, 0, 0)), {0.866025, 0, 0.5});
-  CheckNear(Vec3(M * glm::dvec4(0, 1, 0, 0)), {0, 1, 0});
-  CheckNear(Vec3(M * glm::dvec4(0, 0, 1, 0)), {-0.5, 0, 0.866025});
-  CheckNear(Vec3(M * glm::dvec4(0, 0, 0, 1)), {3.598076, -1, -0.232051});
-  CHECK((M * glm::dvec4(0, 0, 0, 1)).w == 1);
-  // The camera's own position lands on the origin of camera space.
   CheckNear(cgfs::ToCartesian(M * Point4({-3, 1, 2})), {0, 0, 0});
 }
 
@@ -130,6 +134,20 @@ TEST_CASE("instance B of figure 10-10: vertices", "[transform]") {
   const glm::dmat4 M = MakeCameraMatrix(scene.camera.position, scene.camera.orientation) *
                        MakeTransformMatrix(scene.instances[1].transform);
   CheckNear(Vec3(M * glm::dvec4(0, 0, 0, 1)), {0.930608, 1.5, 6.888145});
+}
+
+TEST_CASE("ApplyTransform: the cases of 10-scene-rendering.json", "[transform]") {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("10-scene-rendering.json", "ApplyTransform")) {
+    INFO(c.Describe());
+    const nlohmann::json& transform = c.args.at("transform");
+    const Vec3 moved = ApplyTransform(
+        cgfs::test::ToVector(c.args.at("vertex")),
+        Transform{cgfs::test::ToNumber(transform.at("scale")),
+                  cgfs::test::ToMatrix(transform.at("rotation")),
+                  cgfs::test::ToVector(transform.at("translation"))});
+    CHECK_THAT(cgfs::test::AsNumbers(moved), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("ApplyTransform scales, then rotates, then translates", "[transform]") {

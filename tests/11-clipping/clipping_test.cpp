@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "cases.h"
 #include "checks.h"
 #include "printing.h"
 #include "scenes.h"
@@ -18,6 +19,11 @@ using cgfs::test::IsSameImageAs;
 namespace {
 
 const Plane kNear{{0, 0, 1}, -1};
+
+// {"normal": [x, y, z], "D": D}.
+Plane PlaneOfCase(const nlohmann::json& plane) {
+  return {cgfs::test::ToVector(plane.at("normal")), cgfs::test::ToNumber(plane.at("D"))};
+}
 
 Plane PlaneNamed(int index) {
   return ClippingPlanes(1)[static_cast<std::size_t>(index)];
@@ -57,20 +63,37 @@ TEST_CASE("ClippingPlanes: the five planes of the clipping volume have unit norm
   }
 }
 
-TEST_CASE("SignedDistance: positive inside, negative outside", "[clipping]") {
+TEST_CASE("SignedDistance: the cases of 11-clipping.json", "[clipping]") {
+  // The first two: the left plane's hand-worked 3.535534 and -0.707107.
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "SignedDistance")) {
+    INFO(c.Describe());
+    const double distance =
+        SignedDistance(PlaneOfCase(c.args.at("plane")), cgfs::test::ToVector(c.args.at("vertex")));
+    CHECK_THAT(cgfs::test::AsNumbers(distance), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("SignedDistance: ClippingPlanes' left plane, and sideways along the near plane",
+          "[clipping]") {
   const Plane left = PlaneNamed(1);
   CHECK(SignedDistance(left, {0, 0, 5}) == Approx(3.535534));
   CHECK(SignedDistance(left, {-3, 0, 2}) == Approx(-0.707107));
-  CHECK(SignedDistance(kNear, {0, 0, 1}) == 0);    // on the plane
-  CHECK(SignedDistance(kNear, {5, 5, 3}) == 2);    // sideways does not matter to the near plane
-  CHECK(SignedDistance(kNear, {0, 0, -4}) == -5);  // behind the camera
+  CHECK(SignedDistance(kNear, {5, 5, 3}) == 2);  // sideways does not matter to the near plane
 }
 
-TEST_CASE("Intersection of a segment with the near plane", "[clipping]") {
+TEST_CASE("Intersection: the cases of 11-clipping.json", "[clipping]") {
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "Intersection")) {
+    INFO(c.Describe());
+    const Vec3 Q = Intersection(cgfs::test::ToVector(c.args.at("A")),
+                                cgfs::test::ToVector(c.args.at("B")), PlaneOfCase(c.args.at("plane")));
+    CHECK_THAT(cgfs::test::AsNumbers(Q), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("IntersectionT: the t of a segment's crossing, for every attribute", "[clipping]") {
   const Vec3 A(0, 0, 0.5);
   const Vec3 B(0, 0, 3);
   CHECK(IntersectionT(A, B, kNear) == Approx(0.2));
-  CheckNear(Intersection(A, B, kNear), {0, 0, 1});
   // Any attribute goes along with the same t: 10 at A and 20 at B give 12 at Q.
   CHECK(glm::mix(10.0, 20.0, IntersectionT(A, B, kNear)) == Approx(12));
   // The same crossing, found from the other end.
@@ -152,6 +175,21 @@ TEST_CASE("ClipTrianglesAgainstPlane joins the lists instead of nesting them", "
   const std::vector<Triangle> clipped = ClipTrianglesAgainstPlane(triangles, kNear, vertices);
   CHECK(clipped.size() == 3);  // two from the first, one from the second
   CHECK(vertices.size() == 6 + 4);
+}
+
+TEST_CASE("ComputeBoundingSphere: the cases of 11-clipping.json", "[clipping]") {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("11-clipping.json", "ComputeBoundingSphere")) {
+    INFO(c.Describe());
+    std::vector<Vec3> vertices;
+    for (const nlohmann::json& vertex : c.args.at("vertices")) {
+      vertices.push_back(cgfs::test::ToVector(vertex));
+    }
+    const BoundingSphere sphere = ComputeBoundingSphere(vertices);
+    const Vec3& centre = sphere.center;
+    CHECK_THAT((std::vector<double>{centre.x, centre.y, centre.z, sphere.radius}),
+               cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("ComputeBoundingSphere: the bounding sphere of the cube: centre 0, radius sqrt 3",

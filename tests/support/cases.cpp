@@ -65,6 +65,26 @@ Color ToColor(const nlohmann::json& value) {
   return {ToNumber(value.at(0)), ToNumber(value.at(1)), ToNumber(value.at(2))};
 }
 
+glm::dmat4 ToMatrix(const nlohmann::json& rows) {
+  glm::dmat4 matrix(1.0);
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      matrix[column][row] = ToNumber(rows.at(row).at(column));
+    }
+  }
+  return matrix;
+}
+
+std::vector<double> AsNumbers(const glm::dmat4& value) {
+  std::vector<double> numbers;
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      numbers.push_back(value[column][row]);
+    }
+  }
+  return numbers;
+}
+
 namespace {
 
 // Whether `actual` is within `tolerance` of `expected` (infinities equal themselves).

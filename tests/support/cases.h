@@ -46,6 +46,8 @@ double ToNumber(const nlohmann::json& value);
 Vec3 ToVector(const nlohmann::json& value);
 // [r, g, b], 0 to 255.
 Color ToColor(const nlohmann::json& value);
+// [[row 0], [row 1], [row 2], [row 3]]: a 4x4 matrix as the book writes it, row by row.
+glm::dmat4 ToMatrix(const nlohmann::json& rows);
 
 // What a function returned, as the list of numbers the case expects.
 inline std::vector<double> AsNumbers(const Vec3& value) {
@@ -60,6 +62,8 @@ inline std::vector<double> AsNumbers(double value) {
 inline std::vector<double> AsNumbers(const std::vector<double>& values) {
   return values;
 }
+// A 4x4 matrix row by row, as the cases write it (GLM keeps it column by column).
+std::vector<double> AsNumbers(const glm::dmat4& value);
 // None (an empty optional) is no numbers, as the cases write it (null).
 inline std::vector<double> AsNumbers(const std::optional<Vec3>& value) {
   return value ? AsNumbers(*value) : std::vector<double>{};

@@ -11,11 +11,12 @@
 // what yours returned and the mistake the case catches) or is not written yet.
 //
 // The book's data reach your code as the default adapter below makes them: vectors and
-// colours as arrays [x, y, z], spheres and lights as objects with the book's fields
-// (sphere.center, light.type === "point"), and the book's globals (Cw, Ch, Vw, Vh, d,
-// scene, BACKGROUND_COLOR) set on globalThis before each case. An adapter module of
-// yours may export any of the default adapter's functions to build your own types, or
-// to hand the globals to your module (docs/students.md has an example).
+// colours as arrays [x, y, z], 4x4 matrices as arrays of their rows, spheres, lights,
+// planes and transforms as objects with the book's fields (sphere.center, light.type
+// === "point", plane.normal, plane.D, transform.scale), and the book's globals (Cw, Ch,
+// Vw, Vh, d, scene, BACKGROUND_COLOR) set on globalThis before each case. An adapter
+// module of yours may export any of the default adapter's functions to build your own
+// types, or to hand the globals to your module (docs/students.md has an example).
 //
 // Each case runs in a worker thread, so that one that never returns is stopped after
 // the time limit (default 5 s). Exit status: 0 every case of every written function
@@ -79,6 +80,15 @@ const defaultAdapter = {
   vector: (value) => numbers(value),
   point: ([x, y, h = 1]) => ({ x, y, h }),  // h: chapter 8's intensity
   color: (value) => numbers(value),
+  matrix: (rows) => rows.map(numbers),  // a 4x4 matrix as the book writes it: its rows
+  vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
+  plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
+  transform(value, adapter) {
+    return {
+      scale: number(value.scale), rotation: adapter.matrix(value.rotation, adapter),
+      translation: adapter.vector(value.translation, adapter),
+    };
+  },
   sphere(value, adapter) {
     return {
       center: adapter.vector(value.center), radius: number(value.radius),
@@ -128,6 +138,14 @@ const defaultAdapter = {
     if (kind === "canvas_point") {  // as a canvas takes it: truncated toward zero
       const [x, y] = "x" in value ? [value.x, value.y] : value;
       return [Math.trunc(x), Math.trunc(y)];
+    }
+    if (kind === "matrix") {  // row by row, as the book writes it
+      if (!Array.isArray(value) || !value.every(Array.isArray)) throw new TypeError("not a list of rows");
+      return value.flat().map(Number);
+    }
+    if (kind === "bounding_sphere") {  // its centre, then its radius
+      const [center, radius] = Array.isArray(value) ? value : [value.center, value.radius];
+      return [...adapter.result("vector", center, given, adapter), Number(radius)];
     }
     if (kind === "vector_or_none") return value === null || value === undefined ? [] : adapter.result("vector", value, given, adapter);
     if (kind === "closest") {
@@ -327,7 +345,7 @@ async function main() {
   let failed = false;
   for (const entry of cases.functions) {
     const mine = entry.cases.map((kase, i) => ({ kase, number: i + 1, ...verdicts[index++] }));
-    const name = entry.function.padEnd(20);
+    const name = entry.function.padEnd(22);
     if (!mine.every((each) => each.written)) {
       console.log(`  ${name} not written yet (${mine.length} cases)`);
       continue;

@@ -10,11 +10,13 @@ parameters and prints whether it passed, failed (with the inputs, what was expec
 what yours returned and the mistake the case catches) or is not written yet.
 
 The book's data reach your code as the default adapter below makes them: vectors as
-named tuples (x, y, z), points as (x, y, h), colours as tuples, spheres and lights as objects with the book's fields
-(sphere.center, light.type == "point"), and the book's globals (Cw, Ch, Vw, Vh, d,
-scene, BACKGROUND_COLOR) set on your module before each case. An adapter file of yours
-may define any of the functions of DefaultAdapter (same names, as plain functions) to
-build your own types instead (docs/students.md has an example).
+named tuples (x, y, z), points as (x, y, h), colours as tuples, 4x4 matrices as tuples
+of rows, spheres, lights, planes and transforms as objects with the book's fields
+(sphere.center, light.type == "point", plane.normal, plane.D, transform.scale), and the
+book's globals (Cw, Ch, Vw, Vh, d, scene, BACKGROUND_COLOR) set on your module before
+each case. An adapter file of yours may define any of the functions of DefaultAdapter
+(same names, as plain functions) to build your own types instead (docs/students.md has
+an example).
 
 Exit status: 0 every case of every written function passed, 1 a case failed or your
 module does not load, 2 the command line is wrong. Nothing is written anywhere.
@@ -120,6 +122,25 @@ class DefaultAdapter:
     def color(value):
         return numbers(value)
 
+    @staticmethod
+    def matrix(rows):
+        """A 4x4 matrix as the book writes it: a tuple of its rows."""
+        return tuple(numbers(row) for row in rows)
+
+    @classmethod
+    def vectors(cls, value):
+        return [cls.vector(each) for each in value]
+
+    @classmethod
+    def plane(cls, value):
+        return types.SimpleNamespace(normal=cls.vector(value["normal"]), D=number(value["D"]))
+
+    @classmethod
+    def transform(cls, value):
+        return types.SimpleNamespace(
+            scale=number(value["scale"]), rotation=cls.matrix(value["rotation"]),
+            translation=cls.vector(value["translation"]))
+
     @classmethod
     def sphere(cls, value):
         return types.SimpleNamespace(
@@ -173,6 +194,12 @@ class DefaultAdapter:
         if kind == "canvas_point":  # as a canvas takes it: truncated toward zero
             x, y = (value.x, value.y) if hasattr(value, "x") else value[:2]
             return [math.trunc(x), math.trunc(y)]
+        if kind == "matrix":  # row by row, as the book writes it
+            rows = value.tolist() if hasattr(value, "tolist") else value
+            return [float(each) for row in rows for each in row]
+        if kind == "bounding_sphere":  # its centre, then its radius
+            center, radius = (value.center, value.radius) if hasattr(value, "center") else value
+            return cls.result("vector", center, given) + [float(radius)]
         if kind == "vector_or_none":
             return [] if value is None else cls.result("vector", value, given)
         if kind == "closest":
@@ -232,8 +259,8 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "point", "color", "sphere", "light", "scene", "setup", "result",
-                     "index_of"):
+        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform", "sphere",
+                     "light", "scene", "setup", "result", "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
@@ -324,7 +351,7 @@ def check_function(entry, adapter, module, file, time_limit):
     function = getattr(module, name, None)
     cases = entry["cases"]
     if not callable(function):
-        print(f"  {name:20} not written yet ({len(cases)} cases)")
+        print(f"  {name:22} not written yet ({len(cases)} cases)")
         return False
     failures = []
     for number_, case in enumerate(cases, 1):
@@ -333,9 +360,9 @@ def check_function(entry, adapter, module, file, time_limit):
         if problem:
             failures.append((number_, case, problem))
     if not failures:
-        print(f"  {name:20} passed ({len(cases)} cases)")
+        print(f"  {name:22} passed ({len(cases)} cases)")
         return False
-    print(f"  {name:20} FAILED {len(failures)} of {len(cases)} cases")
+    print(f"  {name:22} FAILED {len(failures)} of {len(cases)} cases")
     for number_, case, problem in failures:
         print(f"    case {number_} of {file}: {case['catches']}")
         inputs = dict(case.get("given", {}), **case["args"])
