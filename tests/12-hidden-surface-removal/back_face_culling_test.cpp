@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "back_face_culling.h"
+#include "cases.h"
 #include "scenes.h"
 
 namespace {
@@ -22,6 +23,21 @@ CameraSpaceScene ClippedCameraSpaceScene(const Scene& scene) {
   return ClipScene(camera_space_scene, ClippingPlanes(scene.viewport.distance));
 }
 
+// {"vertices": [[x, y, z], ...], "triangles": [{"v": [i, j, k], "color": [r, g, b]}, ...]}.
+Model ModelOfCullingCase(const nlohmann::json& object) {
+  Model model;
+  for (const nlohmann::json& vertex : object.at("vertices")) {
+    model.vertices.push_back(cgfs::test::ToVector(vertex));
+  }
+  for (const nlohmann::json& triangle : object.at("triangles")) {
+    Triangle T;
+    T.v = triangle.at("v").get<std::array<int, 3>>();
+    T.color = cgfs::test::ToColor(triangle.at("color"));
+    model.triangles.push_back(T);
+  }
+  return model;
+}
+
 std::vector<Color> ColorsOf(const Model& model) {
   std::vector<Color> colors;
   for (const Triangle& T : model.triangles) {
@@ -31,6 +47,31 @@ std::vector<Color> ColorsOf(const Model& model) {
 }
 
 }  // namespace
+
+TEST_CASE("IsBackFacing: the cases of 12-hidden-surface-removal.json", "[culling]") {
+  using cgfs::test::ToVector;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("12-hidden-surface-removal.json", "IsBackFacing")) {
+    INFO(c.Describe());
+    const bool back = IsBackFacing(ToVector(c.args.at("A")), ToVector(c.args.at("B")),
+                                   ToVector(c.args.at("C")), ToVector(c.args.at("camera")));
+    CHECK_THAT(cgfs::test::AsNumbers(back ? 1.0 : 0.0), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("CullBackFaces: the cases of 12-hidden-surface-removal.json", "[culling]") {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("12-hidden-surface-removal.json", "CullBackFaces")) {
+    INFO(c.Describe());
+    Model object = ModelOfCullingCase(c.args.at("object"));
+    CullBackFaces(object, cgfs::test::ToVector(c.args.at("camera")));
+    std::vector<double> kept;  // each triangle's vertex indices, in order
+    for (const Triangle& T : object.triangles) {
+      kept.insert(kept.end(), T.v.begin(), T.v.end());
+    }
+    CHECK_THAT(kept, cgfs::test::MatchesCase(c));
+  }
+}
 
 TEST_CASE("IsBackFacing: counter-clockwise on the canvas is back-facing", "[culling]") {
   const Vec3 A(0, 0, 5), B(1, 0, 5), C(0, 1, 5);

@@ -6,6 +6,7 @@
 #include <map>
 #include <utility>
 
+#include "cases.h"
 #include "checks.h"
 #include "scenes.h"
 #include "sphere_model.h"
@@ -57,6 +58,31 @@ Canvas RenderWith(const Scene& scene, const Shading& shading) {
 }
 
 }  // namespace
+
+TEST_CASE("UnProjectVertex: the cases of 13-shading.json", "[shading]") {
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("13-shading.json", "UnProjectVertex")) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    const nlohmann::json& viewport = c.given.at("viewport");
+    const Vec3 P = UnProjectVertex(
+        c.args.at("x").get<int>(), c.args.at("y").get<int>(), cgfs::test::ToNumber(c.args.at("inv_z")),
+        Canvas(size.at("width").get<int>(), size.at("height").get<int>()),
+        Viewport{viewport.at("width").get<double>(), viewport.at("height").get<double>(),
+                 viewport.at("d").get<double>()});
+    CHECK_THAT(cgfs::test::AsNumbers(P), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("ComputeTriangleNormal: the cases of 13-shading.json", "[shading]") {
+  using cgfs::test::ToVector;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("13-shading.json", "ComputeTriangleNormal")) {
+    INFO(c.Describe());
+    const Vec3 N = ComputeTriangleNormal(ToVector(c.args.at("A")), ToVector(c.args.at("B")),
+                                         ToVector(c.args.at("C")));
+    CHECK_THAT(cgfs::test::AsNumbers(N), cgfs::test::MatchesCase(c));
+  }
+}
 
 TEST_CASE("UnProjectVertex: the point a pixel shows at a given 1/z", "[shading]") {
   const Canvas canvas(600, 600);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "cases.h"
 #include "cgfs/image_io.h"
 #include "checks.h"
 #include "scenes.h"
@@ -14,6 +15,15 @@ using cgfs::test::CheckNear;
 namespace {
 
 // A texture of `width` x `height` whose texels are the given grey levels, row by row.
+// {"width": w, "height": h, "texels": [[r, g, b], ...] row by row from the top}.
+Texture TextureOfCase(const nlohmann::json& texture) {
+  Texture result{texture.at("width").get<int>(), texture.at("height").get<int>(), {}};
+  for (const nlohmann::json& texel : texture.at("texels")) {
+    result.texels.push_back(cgfs::test::ToColor(texel));
+  }
+  return result;
+}
+
 Texture Greys(int width, int height, std::vector<double> levels) {
   Texture texture{width, height, {}};
   for (const double level : levels) {
@@ -55,6 +65,26 @@ TEST_CASE("u and v are not linear on the canvas, u/z and v/z are", "[texture]") 
   CHECK(carried.inv_z == Approx(0.3));           // 1/z
   CHECK(u == Approx(0.166667));                  // right
   CHECK(1 / carried.inv_z == Approx(3.333333));  // the true depth there
+}
+
+TEST_CASE("GetTexelNearest: the cases of 14-textures.json", "[texture]") {
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("14-textures.json", "GetTexelNearest")) {
+    INFO(c.Describe());
+    const Color texel = GetTexelNearest(TextureOfCase(c.args.at("texture")),
+                                        cgfs::test::ToNumber(c.args.at("tx")),
+                                        cgfs::test::ToNumber(c.args.at("ty")));
+    CHECK_THAT(cgfs::test::AsNumbers(texel), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("GetTexel: the cases of 14-textures.json", "[texture]") {
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("14-textures.json", "GetTexel")) {
+    INFO(c.Describe());
+    const Color texel =
+        GetTexel(TextureOfCase(c.args.at("texture")), cgfs::test::ToNumber(c.args.at("tx")),
+                 cgfs::test::ToNumber(c.args.at("ty")));
+    CHECK_THAT(cgfs::test::AsNumbers(texel), cgfs::test::MatchesCase(c));
+  }
 }
 
 TEST_CASE("GetTexelNearest: floor(u w), clamped to the last texel", "[texture]") {

@@ -54,6 +54,9 @@ double ToNumber(const nlohmann::json& value) {
     }
     throw std::runtime_error("not a number in the cases: " + value.dump());
   }
+  if (value.is_boolean()) {
+    return value.get<bool>() ? 1 : 0;
+  }
   return value.get<double>();
 }
 

@@ -40,7 +40,8 @@ struct FunctionCase {
 // cannot be read or has no such function.
 std::vector<FunctionCase> CasesOf(const std::string& file, const std::string& function);
 
-// A number of a case: a JSON number, or "inf" / "-inf" (JSON has no infinity).
+// A number of a case: a JSON number, "inf" / "-inf" (JSON has no infinity), or true / false
+// (1 / 0: what a yes-or-no function such as IsBackFacing is expected to say).
 double ToNumber(const nlohmann::json& value);
 // [x, y, z].
 Vec3 ToVector(const nlohmann::json& value);

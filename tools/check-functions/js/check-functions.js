@@ -11,9 +11,10 @@
 // what yours returned and the mistake the case catches) or is not written yet.
 //
 // The book's data reach your code as the default adapter below makes them: vectors and
-// colours as arrays [x, y, z], 4x4 matrices as arrays of their rows, spheres, lights,
-// planes and transforms as objects with the book's fields (sphere.center, light.type
-// === "point", plane.normal, plane.D, transform.scale), and the book's globals (Cw, Ch,
+// colours as arrays [x, y, z], 4x4 matrices as arrays of their rows, textures as
+// texture[i][j] (column i, row j), spheres, lights, planes, models and transforms as
+// objects with the book's fields (sphere.center, light.type === "point", plane.normal,
+// plane.D, model.triangles[k].v, transform.scale), and the book's globals (Cw, Ch,
 // Vw, Vh, d, scene, BACKGROUND_COLOR) set on globalThis before each case. An adapter
 // module of yours may export any of the default adapter's functions to build your own
 // types, or to hand the globals to your module (docs/students.md has an example).
@@ -83,6 +84,21 @@ const defaultAdapter = {
   matrix: (rows) => rows.map(numbers),  // a 4x4 matrix as the book writes it: its rows
   vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
   plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
+  // A model: its vertices, and its triangles, each with v (three indices) and color.
+  model(value, adapter) {
+    return {
+      vertices: adapter.vectors(value.vertices, adapter),
+      triangles: value.triangles.map((each) => ({ v: [...each.v], color: adapter.color(each.color, adapter) })),
+    };
+  },
+  // A texture as the book reads it: texture[i][j] the texel in column i, row j (rows from
+  // the top), with its width and height.
+  texture(value, adapter) {
+    const { width, height } = value;
+    const columns = Array.from({ length: width }, (_, i) =>
+      Array.from({ length: height }, (_, j) => adapter.color(value.texels[j * width + i], adapter)));
+    return Object.assign(columns, { width, height });
+  },
   transform(value, adapter) {
     return {
       scale: number(value.scale), rotation: adapter.matrix(value.rotation, adapter),
@@ -142,6 +158,14 @@ const defaultAdapter = {
     if (kind === "matrix") {  // row by row, as the book writes it
       if (!Array.isArray(value) || !value.every(Array.isArray)) throw new TypeError("not a list of rows");
       return value.flat().map(Number);
+    }
+    if (kind === "boolean") {
+      if (typeof value !== "boolean") throw new TypeError("not true or false");
+      return [Number(value)];
+    }
+    if (kind === "triangles") {  // a model (its triangles) or a list of triangles: their indices
+      const triangles = Array.isArray(value) ? value : value.triangles;
+      return triangles.flatMap((each) => Array.from(Array.isArray(each) ? each : each.v, Number));
     }
     if (kind === "bounding_sphere") {  // its centre, then its radius
       const [center, radius] = Array.isArray(value) ? value : [value.center, value.radius];
@@ -239,13 +263,15 @@ function runCase(entry, kase, adapter, module) {
     return `threw ${where(error)}`;
   }
   if (canvas) return pixelDifferences(canvas.drawn(), kase.expected);
+  if (value === undefined && entry.returns === "triangles") value = args[0];  // CullBackFaces changes its object
   let actual;
   try {
     actual = adapter.result(entry.returns, value, decoded(kase.given ?? {}), adapter);
   } catch {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }
-  const expected = kase.expected === null ? [] : [decoded(kase.expected)].flat(Infinity);
+  // Every number expected, lists within lists flattened in order; true and false are 1 and 0.
+  const expected = kase.expected === null ? [] : [decoded(kase.expected)].flat(Infinity).map(Number);
   // As a canvas truncates pixel coordinates.
   if (kase.compare === "truncated") actual = actual.map((v) => (Number.isFinite(v) ? Math.trunc(v) : v));
   const tolerance = kase.tolerance;

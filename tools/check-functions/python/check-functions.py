@@ -11,12 +11,12 @@ what yours returned and the mistake the case catches) or is not written yet.
 
 The book's data reach your code as the default adapter below makes them: vectors as
 named tuples (x, y, z), points as (x, y, h), colours as tuples, 4x4 matrices as tuples
-of rows, spheres, lights, planes and transforms as objects with the book's fields
-(sphere.center, light.type == "point", plane.normal, plane.D, transform.scale), and the
-book's globals (Cw, Ch, Vw, Vh, d, scene, BACKGROUND_COLOR) set on your module before
-each case. An adapter file of yours may define any of the functions of DefaultAdapter
-(same names, as plain functions) to build your own types instead (docs/students.md has
-an example).
+of rows, textures as texture[i][j] (column i, row j), spheres, lights, planes, models
+and transforms as objects with the book's fields (sphere.center, light.type == "point",
+plane.normal, plane.D, model.triangles[k].v, transform.scale), and the book's globals
+(Cw, Ch, Vw, Vh, d, scene, BACKGROUND_COLOR) set on your module before each case. An
+adapter file of yours may define any of the functions of DefaultAdapter (same names, as
+plain functions) to build your own types instead (docs/students.md has an example).
 
 Exit status: 0 every case of every written function passed, 1 a case failed or your
 module does not load, 2 the command line is wrong. Nothing is written anywhere.
@@ -27,6 +27,7 @@ import collections
 import importlib.util
 import json
 import math
+import os
 import signal
 import sys
 import traceback
@@ -107,6 +108,17 @@ class Canvas:
         return [[x, y, *self.pixels[(x, y)]] for x, y in sorted(self.pixels)]
 
 
+class Texture:
+    """texture[i][j]: the texel in column i, row j, as the book indexes a texture."""
+
+    def __init__(self, width, height, texels):
+        self.width, self.height = width, height
+        self.columns = [[texels[j * width + i] for j in range(height)] for i in range(width)]
+
+    def __getitem__(self, i):
+        return self.columns[i]
+
+
 class DefaultAdapter:
     """How the book's data reach your code, and how your results come back."""
 
@@ -134,6 +146,20 @@ class DefaultAdapter:
     @classmethod
     def plane(cls, value):
         return types.SimpleNamespace(normal=cls.vector(value["normal"]), D=number(value["D"]))
+
+    @classmethod
+    def model(cls, value):
+        """A model: its vertices, and its triangles, each with v (three indices) and color."""
+        return types.SimpleNamespace(
+            vertices=cls.vectors(value["vertices"]),
+            triangles=[types.SimpleNamespace(v=list(each["v"]), color=cls.color(each["color"]))
+                       for each in value["triangles"]])
+
+    @classmethod
+    def texture(cls, value):
+        """A texture as the book reads it, texture[i][j] the texel in column i, row j (rows
+        from the top), with its width and height."""
+        return Texture(value["width"], value["height"], [cls.color(each) for each in value["texels"]])
 
     @classmethod
     def transform(cls, value):
@@ -197,6 +223,13 @@ class DefaultAdapter:
         if kind == "matrix":  # row by row, as the book writes it
             rows = value.tolist() if hasattr(value, "tolist") else value
             return [float(each) for row in rows for each in row]
+        if kind == "boolean":
+            if not isinstance(value, bool):
+                raise TypeError("not True or False")
+            return [float(value)]
+        if kind == "triangles":  # a model (its triangles) or a list of triangles: their indices
+            triangles = value.triangles if hasattr(value, "triangles") else value
+            return [float(i) for each in triangles for i in (each.v if hasattr(each, "v") else each)]
         if kind == "bounding_sphere":  # its centre, then its radius
             center, radius = (value.center, value.radius) if hasattr(value, "center") else value
             return cls.result("vector", center, given) + [float(radius)]
@@ -259,8 +292,8 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform", "sphere",
-                     "light", "scene", "setup", "result", "index_of"):
+        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform", "model",
+                     "texture", "sphere", "light", "scene", "setup", "result", "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
@@ -330,6 +363,8 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         signal.setitimer(signal.ITIMER_REAL, 0)
     if canvas:
         return pixel_differences(canvas.drawn(), case["expected"])
+    if value is None and returns == "triangles":  # CullBackFaces changes its object
+        value = args[0]
     try:
         actual = adapter.result(returns, value, decoded(case.get("given", {})))
     except BaseException:
@@ -404,4 +439,7 @@ if __name__ == "__main__":
         sys.exit(2)
     except LoadError as error:
         print(f"check-functions.py: {error}", file=sys.stderr)
+        sys.exit(1)
+    except BrokenPipeError:  # the output piped into a reader that stopped (| head)
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(1)
