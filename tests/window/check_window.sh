@@ -156,6 +156,12 @@ wait $program_pid || status=$?
 program_pid=""
 [ $status -eq 0 ] || fail "Esc: exit status $status, expected 0"
 cat "$work/window.txt"
+# The X server forgets a window a moment after its program ends: until then a search
+# by title would still find it, not the next program's.
+for _ in $(seq 250); do
+  [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
+  sleep 0.02
+done
 
 # With a SLOW_FIGURE (one that takes a good part of a second to draw): closed while it
 # draws it (SIGTERM, which SDL turns into a close), S pressed just before, the window
