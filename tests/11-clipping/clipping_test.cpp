@@ -100,6 +100,26 @@ TEST_CASE("IntersectionT: the t of a segment's crossing, for every attribute", "
   CHECK(IntersectionT(B, A, kNear) == Approx(0.8));
 }
 
+TEST_CASE("ClipTriangle: the cases of 11-clipping.json", "[clipping]") {
+  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "ClipTriangle")) {
+    INFO(c.Describe());
+    std::vector<Vec3> vertices;
+    for (const nlohmann::json& vertex : c.args.at("vertices")) {
+      vertices.push_back(cgfs::test::ToVector(vertex));
+    }
+    const nlohmann::json& triangle = c.args.at("triangle");
+    const Triangle T{triangle.at("v").get<std::array<int, 3>>(),
+                     cgfs::test::ToColor(triangle.at("color"))};
+    std::vector<double> corners;  // each triangle's corners, in its order
+    for (const Triangle& piece : ClipTriangle(T, PlaneOfCase(c.args.at("plane")), vertices)) {
+      for (const Vec3& corner : Corners(piece, vertices)) {
+        corners.insert(corners.end(), {corner.x, corner.y, corner.z});
+      }
+    }
+    CHECK_THAT(corners, cgfs::test::MatchesCase(c));
+  }
+}
+
 TEST_CASE("ClipTriangle: wholly in front, wholly behind", "[clipping]") {
   std::vector<Vec3> vertices = {{0, 0, 2}, {1, 0, 3}, {0, 1, 1}, {0, 0, -2}, {1, 0, 0.5}};
   const Triangle in_front{{0, 1, 2}, cgfs::kRed};  // z = 1 counts as in front

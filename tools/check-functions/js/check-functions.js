@@ -84,11 +84,13 @@ const defaultAdapter = {
   matrix: (rows) => rows.map(numbers),  // a 4x4 matrix as the book writes it: its rows
   vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
   plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
-  // A model: its vertices, and its triangles, each with v (three indices) and color.
+  // A triangle of a model: v, three indices into its vertex list, and color.
+  triangle: (value, adapter) => ({ v: [...value.v], color: adapter.color(value.color, adapter) }),
+  // A model: its vertices and its triangles.
   model(value, adapter) {
     return {
       vertices: adapter.vectors(value.vertices, adapter),
-      triangles: value.triangles.map((each) => ({ v: [...each.v], color: adapter.color(each.color, adapter) })),
+      triangles: value.triangles.map((each) => adapter.triangle(each, adapter)),
     };
   },
   // A texture as the book reads it: texture[i][j] the texel in column i, row j (rows from
@@ -166,6 +168,11 @@ const defaultAdapter = {
     if (kind === "triangles") {  // a model (its triangles) or a list of triangles: their indices
       const triangles = Array.isArray(value) ? value : value.triangles;
       return triangles.flatMap((each) => Array.from(Array.isArray(each) ? each : each.v, Number));
+    }
+    if (kind === "corners") {  // each triangle's corners, its indices looked up in the vertex
+      const { vertices } = given.arguments;  // list the function was given
+      return value.flatMap((each) => Array.from(Array.isArray(each) ? each : each.v,
+        (i) => adapter.result("vector", vertices[i], given, adapter)).flat());
     }
     if (kind === "bounding_sphere") {  // its centre, then its radius
       const [center, radius] = Array.isArray(value) ? value : [value.center, value.radius];
@@ -264,9 +271,11 @@ function runCase(entry, kase, adapter, module) {
   }
   if (canvas) return pixelDifferences(canvas.drawn(), kase.expected);
   if (value === undefined && entry.returns === "triangles") value = args[0];  // CullBackFaces changes its object
+  // The case's globals, and the arguments as your function was given them (after it ran).
+  const arguments_ = Object.fromEntries(entry.parameters.map(([name], i) => [name, args[i]]));
   let actual;
   try {
-    actual = adapter.result(entry.returns, value, decoded(kase.given ?? {}), adapter);
+    actual = adapter.result(entry.returns, value, { ...decoded(kase.given ?? {}), arguments: arguments_ }, adapter);
   } catch {
     return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
   }

@@ -148,12 +148,15 @@ class DefaultAdapter:
         return types.SimpleNamespace(normal=cls.vector(value["normal"]), D=number(value["D"]))
 
     @classmethod
+    def triangle(cls, value):
+        """A triangle of a model: v, three indices into its vertex list, and color."""
+        return types.SimpleNamespace(v=list(value["v"]), color=cls.color(value["color"]))
+
+    @classmethod
     def model(cls, value):
-        """A model: its vertices, and its triangles, each with v (three indices) and color."""
-        return types.SimpleNamespace(
-            vertices=cls.vectors(value["vertices"]),
-            triangles=[types.SimpleNamespace(v=list(each["v"]), color=cls.color(each["color"]))
-                       for each in value["triangles"]])
+        """A model: its vertices and its triangles."""
+        return types.SimpleNamespace(vertices=cls.vectors(value["vertices"]),
+                                     triangles=[cls.triangle(each) for each in value["triangles"]])
 
     @classmethod
     def texture(cls, value):
@@ -230,6 +233,10 @@ class DefaultAdapter:
         if kind == "triangles":  # a model (its triangles) or a list of triangles: their indices
             triangles = value.triangles if hasattr(value, "triangles") else value
             return [float(i) for each in triangles for i in (each.v if hasattr(each, "v") else each)]
+        if kind == "corners":  # each triangle's corners, its indices looked up in the vertex
+            vertices = given["arguments"]["vertices"]  # list the function was given
+            return [number for each in value for i in (each.v if hasattr(each, "v") else each)
+                    for number in cls.result("vector", vertices[i], given)]
         if kind == "bounding_sphere":  # its centre, then its radius
             center, radius = (value.center, value.radius) if hasattr(value, "center") else value
             return cls.result("vector", center, given) + [float(radius)]
@@ -292,8 +299,9 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform", "model",
-                     "texture", "sphere", "light", "scene", "setup", "result", "index_of"):
+        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform",
+                     "triangle", "model", "texture", "sphere", "light", "scene", "setup", "result",
+                     "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
@@ -365,8 +373,10 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         return pixel_differences(canvas.drawn(), case["expected"])
     if value is None and returns == "triangles":  # CullBackFaces changes its object
         value = args[0]
+    # The case's globals, and the arguments as your function was given them (after it ran).
+    given = dict(decoded(case.get("given", {})), arguments=dict(zip((n for n, _ in parameters), args)))
     try:
-        actual = adapter.result(returns, value, decoded(case.get("given", {})))
+        actual = adapter.result(returns, value, given)
     except BaseException:
         return [f"returned {value!r}, not a {returns}"]
     expected = flattened(decoded(case["expected"]))
