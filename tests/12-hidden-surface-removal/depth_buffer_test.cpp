@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cases.h"
 #include "printing.h"
 #include "scenes.h"
 
@@ -122,4 +123,26 @@ TEST_CASE("a depth-tested triangle on an empty buffer covers what DrawFilledTria
   DrawFilledTriangle({-200, -250, 1}, {200, 50, 1}, {20, 250, 1}, 3, 7, 5, cgfs::kGreen, tested,
                      buffer);
   CHECK_THAT(tested.GetImage(), IsSameImageAs(plain.GetImage()));
+}
+
+TEST_CASE("DrawFilledTriangle with a depth buffer: the cases of 12-hidden-surface-removal.json",
+          "[depth]") {
+  using cgfs::test::ToNumber;
+  const auto point = [](const nlohmann::json& P) {
+    return Point{static_cast<int>(ToNumber(P.at(0))), static_cast<int>(ToNumber(P.at(1)))};
+  };
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("12-hidden-surface-removal.json", "DrawFilledTriangle")) {
+    INFO(c.Describe());
+    const nlohmann::json& size = c.given.at("canvas");
+    Canvas canvas(size.at("width").get<int>(), size.at("height").get<int>(),
+                  cgfs::test::kCaseBackground);
+    DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
+    for (const nlohmann::json& call : c.calls) {  // in order, on one canvas and one buffer
+      DrawFilledTriangle(point(call.at("P0")), point(call.at("P1")), point(call.at("P2")),
+                         ToNumber(call.at("z0")), ToNumber(call.at("z1")), ToNumber(call.at("z2")),
+                         cgfs::test::ToColor(call.at("color")), canvas, depth_buffer);
+    }
+    CHECK_THAT(cgfs::test::DrawnPixelsAsNumbers(canvas), cgfs::test::MatchesCase(c));
+  }
 }

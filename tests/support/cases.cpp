@@ -10,7 +10,8 @@ namespace cgfs::test {
 
 std::string FunctionCase::Describe() const {
   return function + ", case " + std::to_string(number) + " of " + file + ": " + catches +
-         "; args " + args.dump() + (given.is_null() ? "" : "; given " + given.dump());
+         (calls.empty() ? "; args " + args.dump() : "; calls " + calls.dump()) +
+         (given.is_null() ? "" : "; given " + given.dump());
 }
 
 std::vector<FunctionCase> CasesOf(const std::string& file, const std::string& function) {
@@ -31,7 +32,8 @@ std::vector<FunctionCase> CasesOf(const std::string& file, const std::string& fu
                      static_cast<int>(found.size()) + 1,
                      each.at("catches").get<std::string>(),
                      each.value("given", nlohmann::json()),
-                     each.at("args"),
+                     each.value("args", nlohmann::json::object()),
+                     each.value("calls", nlohmann::json::array()),
                      each.at("expected"),
                      each.at("tolerance").get<double>(),
                      each.value("compare", "")};

@@ -25,6 +25,9 @@ struct FunctionCase {
   std::string catches;   // the mistake it catches, in one sentence
   nlohmann::json given;  // the book's globals the function reads: canvas, viewport, scene
   nlohmann::json args;   // its parameters, by the book's names
+  // Or, for a function whose effect builds up (a depth buffer): its arguments for each
+  // call in turn, all on one canvas and buffer; args is then empty.
+  nlohmann::json calls;
   nlohmann::json expected;
   double tolerance = 0;
   // "truncated": yours truncated toward zero before comparing, as a canvas truncates

@@ -143,6 +143,9 @@ const defaultAdapter = {
       globalThis.scene = adapter.scene(given.scene, adapter);
       globalThis.BACKGROUND_COLOR = globalThis.scene.background_color;
     }
+    if (given.depth_buffer === "empty") {  // chapter 12: 0 is 1/z infinitely far; [x][y], x, y >= 0
+      globalThis.depth_buffer = Array.from({ length: given.canvas.width }, () => new Array(given.canvas.height).fill(0));
+    }
     if (given.camera) {  // chapter 5: its rotation a 3x3 matrix, row by row
       globalThis.camera = { position: adapter.vector(given.camera.position), rotation: given.camera.rotation };
     }
@@ -254,18 +257,19 @@ function runCase(entry, kase, adapter, module) {
     canvas = new Canvas(given.canvas.width, given.canvas.height);
     given.canvas.PutPixel = canvas.PutPixel;
   }
+  let calls;  // one call, or several in turn on one canvas and depth buffer (kase.calls)
   try {
     adapter.setup(module, given, adapter);
-    args = entry.parameters.map(([name, kind]) => {
-      const value = decoded(kase.args[name]);
+    calls = (kase.calls ?? [kase.args]).map((call) => entry.parameters.map(([name, kind]) => {
+      const value = decoded(call[name]);
       return kind === "number" ? value : adapter[kind](value, adapter);
-    });
+    }));
   } catch (error) {
     return `your adapter failed to build the inputs: ${where(error)}`;
   }
   let value;
   try {
-    value = module[entry.function](...args);
+    for (args of calls) value = module[entry.function](...args);
   } catch (error) {
     return `threw ${where(error)}`;
   }
@@ -394,7 +398,7 @@ async function main() {
     console.log(`  ${name} FAILED ${failures.length} of ${mine.length} cases`);
     for (const { kase, number: n, problem } of failures) {
       console.log(`    case ${n} of ${matches[0]}: ${kase.catches}`);
-      console.log(`      ${entry.call} with ${JSON.stringify({ ...(kase.given ?? {}), ...kase.args })}`);
+      console.log(`      ${entry.call} with ${JSON.stringify({ ...(kase.given ?? {}), ...(kase.args ?? { calls: kase.calls }) })}`);
       console.log(`      ${problem}`);
     }
   }

@@ -206,6 +206,9 @@ class DefaultAdapter:
         if "scene" in given:
             module.scene = cls.scene(given["scene"])
             module.BACKGROUND_COLOR = module.scene.background_color
+        if given.get("depth_buffer") == "empty":  # chapter 12: 0 is 1/z infinitely far
+            width, height = given["canvas"]["width"], given["canvas"]["height"]
+            module.depth_buffer = [[0] * height for _ in range(width)]  # [x][y], x, y >= 0
         if "camera" in given:  # chapter 5: its rotation a 3x3 matrix, row by row
             module.camera = types.SimpleNamespace(
                 position=cls.vector(given["camera"]["position"]),
@@ -357,12 +360,15 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         given["canvas"]["PutPixel"] = canvas.PutPixel
     try:
         adapter.setup(module, given)
-        args = [convert(adapter, kind, decoded(case["args"][name])) for name, kind in parameters]
+        # One call, or several in turn on one canvas and depth buffer (case["calls"]).
+        calls = [[convert(adapter, kind, decoded(call[name])) for name, kind in parameters]
+                 for call in case.get("calls", [case.get("args")])]
     except BaseException as error:
         return [f"your adapter failed to build the inputs: {one_line(error)}"]
     signal.setitimer(signal.ITIMER_REAL, time_limit)
     try:
-        value = function(*args)
+        for args in calls:
+            value = function(*args)
     except TimeLimit:
         return [f"did not return within {time_limit:g} s"]
     except BaseException as error:
@@ -410,7 +416,7 @@ def check_function(entry, adapter, module, file, time_limit):
     print(f"  {name:22} FAILED {len(failures)} of {len(cases)} cases")
     for number_, case, problem in failures:
         print(f"    case {number_} of {file}: {case['catches']}")
-        inputs = dict(case.get("given", {}), **case["args"])
+        inputs = dict(case.get("given", {}), **case.get("args", {"calls": case.get("calls")}))
         print(f"      {entry['call']} with {json.dumps(inputs)}")
         for line in problem:
             print(f"      {line}")
