@@ -1,10 +1,33 @@
 // Chapter 15, "Normal Mapping": decoding, the tangent basis, and bending the normal.
 #include <catch2/catch.hpp>
 
+#include "cases.h"
 #include "checks.h"
 #include "normal_mapping.h"
 
 using cgfs::test::CheckNear;
+
+TEST_CASE("DecodeNormal: the cases of 15-rasterizer-extensions.json", "[normal-mapping]") {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("15-rasterizer-extensions.json", "DecodeNormal")) {
+    INFO(c.Describe());
+    const Vec3 n = DecodeNormal(cgfs::test::ToColor(c.args.at("texel")));
+    CHECK_THAT(cgfs::test::AsNumbers(n), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("ApplyNormalMap: the cases of 15-rasterizer-extensions.json", "[normal-mapping]") {
+  using cgfs::test::ToVector;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("15-rasterizer-extensions.json", "ApplyNormalMap")) {
+    INFO(c.Describe());
+    const nlohmann::json& basis = c.args.at("basis");
+    const Vec3 bent = ApplyNormalMap(ToVector(c.args.at("n")),
+                                     TangentBasis{ToVector(basis.at("T")), ToVector(basis.at("B"))},
+                                     ToVector(c.args.at("N")));
+    CHECK_THAT(cgfs::test::AsNumbers(bent), cgfs::test::MatchesCase(c));
+  }
+}
 
 TEST_CASE("a normal map's flat texel decodes to the unbent normal", "[normal-mapping]") {
   CheckNear(DecodeNormal({128, 128, 255}), {0.0039216, 0.0039216, 1.0}, 1e-6);

@@ -1,8 +1,33 @@
 // Chapter 15, "Shadow Mapping": the comparison, filtering, and maps of a small scene.
 #include <catch2/catch.hpp>
 
+#include "cases.h"
 #include "scenes.h"
 #include "shadow_mapping.h"
+
+TEST_CASE("InShadow: the cases of 15-rasterizer-extensions.json", "[shadow-mapping]") {
+  using cgfs::test::ToNumber;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("15-rasterizer-extensions.json", "InShadow")) {
+    INFO(c.Describe());
+    const bool shadowed = InShadow(ToNumber(c.args.at("stored_depth")), ToNumber(c.args.at("depth")),
+                                   ToNumber(c.args.at("bias")));
+    CHECK_THAT(cgfs::test::AsNumbers(shadowed ? 1.0 : 0.0), cgfs::test::MatchesCase(c));
+  }
+}
+
+TEST_CASE("PercentageCloserFilter: the cases of 15-rasterizer-extensions.json",
+          "[shadow-mapping]") {
+  using cgfs::test::ToNumber;
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("15-rasterizer-extensions.json", "PercentageCloserFilter")) {
+    INFO(c.Describe());
+    const std::array<bool, 4> in_shadow = c.args.at("in_shadow").get<std::array<bool, 4>>();
+    const double visibility =
+        PercentageCloserFilter(in_shadow, ToNumber(c.args.at("fx")), ToNumber(c.args.at("fy")));
+    CHECK_THAT(cgfs::test::AsNumbers(visibility), cgfs::test::MatchesCase(c));
+  }
+}
 
 TEST_CASE("a point is in shadow when the map holds something closer", "[shadow-mapping]") {
   CHECK(InShadow(3.0, 5.0, 0.05));

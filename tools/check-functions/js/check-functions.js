@@ -84,6 +84,9 @@ const defaultAdapter = {
   matrix: (rows) => rows.map(numbers),  // a 4x4 matrix as the book writes it: its rows
   vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
   plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
+  booleans: (value) => value.map(Boolean),
+  // A triangle's tangent T and bitangent B (chapter 15's normal mapping).
+  tangent_basis: (value, adapter) => ({ T: adapter.vector(value.T, adapter), B: adapter.vector(value.B, adapter) }),
   // A triangle of a model: v, three indices into its vertex list, and color.
   triangle: (value, adapter) => ({ v: [...value.v], color: adapter.color(value.color, adapter) }),
   // A model: its vertices and its triangles.

@@ -147,6 +147,15 @@ class DefaultAdapter:
     def plane(cls, value):
         return types.SimpleNamespace(normal=cls.vector(value["normal"]), D=number(value["D"]))
 
+    @staticmethod
+    def booleans(value):
+        return [bool(each) for each in value]
+
+    @classmethod
+    def tangent_basis(cls, value):
+        """A triangle's tangent T and bitangent B (chapter 15's normal mapping)."""
+        return types.SimpleNamespace(T=cls.vector(value["T"]), B=cls.vector(value["B"]))
+
     @classmethod
     def triangle(cls, value):
         """A triangle of a model: v, three indices into its vertex list, and color."""
@@ -302,9 +311,9 @@ def adapted(adapter_module):
     class Adapter(DefaultAdapter):
         pass
     if adapter_module is not None:
-        for name in ("vector", "vectors", "point", "color", "matrix", "plane", "transform",
-                     "triangle", "model", "texture", "sphere", "light", "scene", "setup", "result",
-                     "index_of"):
+        for name in ("vector", "vectors", "point", "color", "booleans", "matrix", "plane",
+                     "transform", "triangle", "model", "texture", "tangent_basis", "sphere", "light",
+                     "scene", "setup", "result", "index_of"):
             if hasattr(adapter_module, name):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
     return Adapter
