@@ -36,7 +36,9 @@ TEST_CASE("TraceRay: the cases of 02-basic-rays.json", "[equations]") {
   }
 }
 
-TEST_CASE("RenderScene paints every pixel of the canvas exactly once", "[equations]") {
+TEST_CASE("RenderScene paints every pixel of the canvas", "[equations]") {
+  // A non-square canvas: x and y each run over their own side. (A loop that also
+  // visits a row past the canvas cannot be seen: PutPixel drops what falls off it.)
   Scene empty;
   empty.background_color = cgfs::kBlack;
   Canvas canvas(40, 30, cgfs::kWhite);

@@ -106,6 +106,31 @@ TEST_CASE("the tolerance is a budget of pixels beyond a few levels", "[compare]"
   }
 }
 
+TEST_CASE("a channel two levels off is the same pixel; three levels off differs", "[compare]") {
+  const Image expected = Gradient(600, 600);
+  for (const int levels : {-2, 2, -3, 3}) {
+    Image actual = expected;
+    Rgb8 pixel = actual.At(300, 300);
+    pixel.g = static_cast<std::uint8_t>(pixel.g + levels);
+    actual.Set(300, 300, pixel);
+    CAPTURE(levels);
+    CHECK(cgfs::CompareImages(expected, actual).differing_pixels == (std::abs(levels) > 2 ? 1 : 0));
+  }
+}
+
+TEST_CASE("the budget of differing pixels is rounded down where it is not whole", "[compare]") {
+  // 640 x 480 x 0.0001 = 30.72 pixels: 30 may differ, not 31.
+  const Image expected = Gradient(640, 480);
+  CHECK(cgfs::Tolerance{}.AllowedDifferingPixels(640 * 480) == 30);
+  Image actual = expected;
+  for (int i = 0; i < 31; ++i) {
+    Rgb8 pixel = actual.At(i, 1);
+    pixel.r = static_cast<std::uint8_t>(pixel.r > 127 ? pixel.r - 10 : pixel.r + 10);
+    actual.Set(i, 1, pixel);
+    CHECK(cgfs::CompareImages(expected, actual).passed == (i + 1 <= 30));
+  }
+}
+
 TEST_CASE("images of different sizes cannot be compared", "[compare]") {
   CHECK_THROWS_AS(cgfs::CompareImages(Image(600, 600), Image(600, 598)), cgfs::Error);
 }

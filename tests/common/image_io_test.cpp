@@ -115,6 +115,44 @@ TEST_CASE("a JPEG is read as RGB", "[image-io]") {
   CHECK(std::abs(pixel.b - 20) <= 4);
 }
 
+TEST_CASE("grey and RGBA PNGs are read as RGB", "[image-io]") {
+  // 3 x 2 pixels of 1 (grey), 2 (grey and alpha) and 4 (RGBA) channels, written with
+  // stb's encoder: every one comes back as three channels, the alpha dropped.
+  const std::vector<std::uint8_t> levels = {0, 40, 80, 120, 160, 255};
+  for (const int channels : {1, 2, 4}) {
+    std::vector<std::uint8_t> bytes;
+    for (const std::uint8_t level : levels) {
+      if (channels <= 2) {
+        bytes.push_back(level);
+      } else {
+        bytes.insert(bytes.end(), {level, static_cast<std::uint8_t>(255 - level), 7});
+      }
+      if (channels % 2 == 0) {
+        bytes.push_back(100);  // alpha
+      }
+    }
+    std::string png;
+    REQUIRE(stbi_write_png_to_func(
+                [](void* context, void* data, int size) {
+                  static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                             static_cast<std::size_t>(size));
+                },
+                &png, 3, 2, channels, bytes.data(), 3 * channels) != 0);
+    const fs::path file = TemporaryFolder() / "channels.png";
+    WriteText(file, png);
+    const Image image = cgfs::ReadImage(file);
+    CAPTURE(channels);
+    REQUIRE(image.Width() == 3);
+    REQUIRE(image.Height() == 2);
+    for (int i = 0; i < 6; ++i) {
+      const std::uint8_t level = levels[static_cast<std::size_t>(i)];
+      const Rgb8 expected = channels <= 2 ? Rgb8{level, level, level}
+                                          : Rgb8{level, static_cast<std::uint8_t>(255 - level), 7};
+      CHECK(image.At(i % 3, i / 3) == expected);
+    }
+  }
+}
+
 TEST_CASE("writing replaces an existing file", "[image-io]") {
   const fs::path file = TemporaryFolder() / "pattern.png";
   WriteText(file, "old contents");
