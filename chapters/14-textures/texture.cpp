@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <string>
+
+#include <glm/common.hpp>
 
 #include "cgfs/error.h"
 #include "cgfs/image_io.h"
