@@ -11,7 +11,9 @@
 #   - chapter 02 copied forward as 03 without our new header is told to take it;
 #   - a copy that does not compile fails with its first error, and ctest afterwards
 #     does not pass; a faithful chapter beside it is tested all the same;
-#   - a missing or misnamed folder gets one line and exit status 2.
+#   - a missing or misnamed folder gets one line and exit status 2;
+#   - the five examples of `scripts/test-student` in docs/students.md (each under a line
+#     "<!-- example: NAME -->") are these runs' command and output, word for word.
 # Usage: check_student_build.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 source_dir=$1 work=$2
