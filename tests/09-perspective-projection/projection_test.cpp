@@ -63,7 +63,8 @@ TEST_CASE("ProjectVertex: the book's cube lands off the canvas", "[projection]")
   CHECK(ProjectVertex({1, -1, 2}, canvas, Viewport{}) == Point{300, -300});
 }
 
-TEST_CASE("ProjectVertex: farther is smaller; the distance d scales the picture", "[projection]") {
+TEST_CASE("ProjectVertex: farther is smaller, and the distance d scales the picture",
+          "[projection]") {
   const Canvas canvas(600, 600);
   CHECK(ProjectVertex({1, 1, 5}, canvas, Viewport{}) == Point{120, 120});
   CHECK(ProjectVertex({1, 1, 10}, canvas, Viewport{}) == Point{60, 60});

@@ -91,7 +91,8 @@ TEST_CASE("z in the depth buffer shows the ramp where it is under the floor", "[
   CHECK(inverse_z.GetPixel(0, -73) == Rgb8{0, 0, 255});
 }
 
-TEST_CASE("an open box is not culled; culled as if closed, its inside is gone", "[figures]") {
+TEST_CASE("an open box is not culled, and culled as if it were closed its inside is gone",
+          "[figures]") {
   const Canvas open = RenderFigureNamed(Figures(), "open-box");
   const Canvas culled = RenderFigureNamed(Figures(), "open-box-culled");
   CHECK(open.GetPixel(0, -100) == Rgb8{255, 0, 0});  // the inside of the far face

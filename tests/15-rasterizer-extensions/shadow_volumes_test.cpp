@@ -107,7 +107,7 @@ TEST_CASE("depth fail: a surface inside the volume is in shadow, outside it is n
   CHECK(CountAtCentre(volume, 10, kDepthPass) == 0);
 }
 
-TEST_CASE("depth fail is right with the camera inside the volume; depth pass is not",
+TEST_CASE("depth fail is right with the camera inside the volume, depth pass is not",
           "[shadow-volumes]") {
   using enum ShadowVolumeCounting;
   const Model volume = Box(-2, 8);                    // the camera, at the origin, is inside

@@ -106,7 +106,7 @@ TEST_CASE("the tolerance is a budget of pixels beyond a few levels", "[compare]"
   }
 }
 
-TEST_CASE("a channel two levels off is the same pixel; three levels off differs", "[compare]") {
+TEST_CASE("a channel two levels off is the same pixel, three levels off differs", "[compare]") {
   const Image expected = Gradient(600, 600);
   for (const int levels : {-2, 2, -3, 3}) {
     Image actual = expected;
