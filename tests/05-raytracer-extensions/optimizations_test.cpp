@@ -227,3 +227,19 @@ TEST_CASE("IsInShadow: coherence and any-hit give Listing 4-3's answer", "[optim
   CHECK(shadowed > 500);  // the test sees both answers
   CHECK(shadowed < 4500);
 }
+
+TEST_CASE("IsInShadow: the last blocker shadows only between the point and the light",
+          "[optimizations]") {
+  // A sphere at z = 10 and a point light at z = 5. From z = 12 the sphere is between
+  // the point and the light, and becomes the remembered blocker; from z = -5 it lies
+  // beyond the light, where it shadows nothing, remembered or not.
+  Scene scene;
+  scene.objects.push_back(std::make_shared<Sphere>(Vec3{0, 0, 10}, 1, cgfs::kRed));
+  scene.lights.push_back({LightType::kPoint, 1, {0, 0, 5}});
+  PrepareScene(scene, AllOptimizations());
+  const Vec3 light = scene.lights[0].position;
+  const Vec3 behind{0, 0, 12};
+  const Vec3 in_front{0, 0, -5};
+  CHECK(IsInShadow(behind, light - behind, 1, 0, scene));
+  CHECK_FALSE(IsInShadow(in_front, light - in_front, 1, 0, scene));
+}

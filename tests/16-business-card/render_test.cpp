@@ -24,7 +24,7 @@ cgfs::Canvas RenderCard(int width, int height, const RenderSettings& settings) {
 
 }  // namespace
 
-TEST_CASE("RenderPixel: 13 + 224 x the mean sample, truncated", "[render]") {
+TEST_CASE("RenderPixel: 13 + 224 x the mean sample, whatever the number of samples", "[render]") {
   // The top left pixel, x = 511, y = 511, sees only sky. Its rays leave the eye close to
   // its middle ray, whose sky is 0.7 (1 - d.z)^4 in red.
   const Camera camera = MakeCamera(512, 512);
@@ -37,6 +37,21 @@ TEST_CASE("RenderPixel: 13 + 224 x the mean sample, truncated", "[render]") {
   CHECK(RenderPixel(camera, 511, 511, settings) == pixel);
   settings.samples = 4;
   CHECK(std::abs(RenderPixel(camera, 511, 511, settings).r - red) <= 2);
+}
+
+TEST_CASE("RenderPixel: the sum is truncated, as the card's (int)p does, not rounded", "[render]") {
+  // A camera high above the letters looking level along +x, its image's y collapsed
+  // (b = 0): every sample's direction has d.z = 0 exactly, so every sample is the sky
+  // at the horizon, (0.7, 0.6, 1.0), and the sum is 13 + 224 (0.7, 0.6, 1.0) =
+  // (169.8, 147.4, 237): truncated 169, where rounding gives 170.
+  Camera level;
+  level.eye = {0, 0, 50};
+  level.g = {1, 0, 0};
+  level.a = {0, 0.002, 0};
+  level.b = {0, 0, 0};
+  level.c = {1, -0.512, 0};
+  level.aperture = 99;
+  CHECK(RenderPixel(level, 100, 200, RenderSettings{}) == glm::ivec3(169, 147, 237));
 }
 
 TEST_CASE("business-card matches its golden image and has the original card's statistics",
