@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <map>
 #include <system_error>
+#include <tuple>
 
 #include "cgfs/compare.h"
 #include "cgfs/error.h"
@@ -40,8 +42,26 @@ const Figure& FindFigure(const std::vector<Figure>& figures, const std::string& 
   throw std::logic_error("unreachable");
 }
 
+namespace {
+
+// Each figure is drawn once per test program and size, and the golden test and the
+// tests of its pixels share the drawing: within a test program a figure's name stands
+// for one image (every caller passes the chapter's Figures() with its default
+// settings; that other settings draw the same images is tested with RenderFigure).
+const Canvas& DrawnOnce(const Figure& figure, int width, int height) {
+  static std::map<std::tuple<std::string, int, int>, Canvas> drawn;
+  const auto key = std::tuple(figure.name, width, height);
+  auto found = drawn.find(key);
+  if (found == drawn.end()) {
+    found = drawn.emplace(key, RenderFigure(figure, width, height)).first;
+  }
+  return found->second;
+}
+
+}  // namespace
+
 Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& name) {
-  return RenderFigure(FindFigure(figures, name), kGoldenWidth, kGoldenHeight);
+  return DrawnOnce(FindFigure(figures, name), kGoldenWidth, kGoldenHeight);
 }
 
 std::string GoldenFile(const std::string& chapter, const std::string& name) {
@@ -97,7 +117,7 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
   const Image golden = ReadGolden(chapter, name);
   const Figure& figure = FindFigure(figures, name);
   CompareWithGolden(chapter, name, golden,
-                    RenderFigure(figure, golden.Width(), golden.Height()).GetImage());
+                    DrawnOnce(figure, golden.Width(), golden.Height()).GetImage());
 }
 
 void CheckImageAgainstGolden(const std::string& chapter, const std::string& name,

@@ -17,7 +17,7 @@ inline constexpr int kGoldenHeight = 600;
 // The figure of that name (a test failure if the chapter has none).
 const Figure& FindFigure(const std::vector<Figure>& figures, const std::string& name);
 
-// Draws the named figure at 600x600.
+// Draws the named figure at 600x600 (once per test program: see golden.cpp).
 Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& name);
 
 // tests/golden/<chapter>/<name>.png

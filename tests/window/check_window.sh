@@ -10,7 +10,8 @@
 # view (--view), and not the unmoved one. With a SLOW_FIGURE, the window is closed while
 # it draws that figure (below). Esc closes the window, exit status 0. Without a display
 # --window says so in one line, exit status 2. Leaves screenshots in WORK_DIR. Skipped
-# without Xvfb and xdotool (CI installs them: scripts/setup).
+# without Xvfb and xdotool (CI installs them: scripts/setup). CGFS_WINDOW_FIGURES: the
+# figures to open with instead of the first two (a space-separated list).
 # Usage: check_window.sh PROGRAM GOLDEN_DIR WORK_DIR [CAMERA_FIGURE [SLOW_FIGURE]]
 set -euo pipefail
 program=$1 golden=$2 work=$3 camera=${4:-} slow=${5:-}
@@ -64,8 +65,13 @@ done
 kill -0 "$xvfb" 2>/dev/null || { fail "Xvfb did not start"; exit 1; }
 echo "virtual display $DISPLAY"
 
-# The chapter's first two figures, then the camera figure unless it is one of them.
-mapfile -t names < <("$program" --list | cut -d' ' -f1 | head -2)
+# The chapter's first two figures (or CGFS_WINDOW_FIGURES), then the camera figure
+# unless it is one of them.
+if [ -n "${CGFS_WINDOW_FIGURES:-}" ]; then
+  read -ra names <<<"$CGFS_WINDOW_FIGURES"
+else
+  mapfile -t names < <("$program" --list | cut -d' ' -f1 | head -2)
+fi
 shown=("${names[@]}")
 [ ${#names[@]} -eq 2 ] || names+=("${names[0]}")  # one figure: Right shows it again
 [ -z "$camera" ] || [[ " ${names[*]} " == *" $camera "* ]] || shown+=("$camera")
