@@ -92,20 +92,28 @@ window_named() {
 # the program said so in one line and is started again, up to three times.
 # Twice in some hundred runs under that load the program ended at once without a word
 # (never seen alone): its exit status is printed, and it is started again likewise.
-ended=""
-for attempt in 1 2 3; do
-  "$program" --window "${shown[@]/#/--figure=}" --output "$work/saved" >"$work/window.txt" 2>&1 &
-  program_pid=$!
-  window=$(window_named "^$chapter: ")
-  [ -z "$window" ] || break
-  kill -0 $program_pid 2>/dev/null && break  # running, with no window: fails below
-  ended=0
-  wait $program_pid || ended=$?
-  program_pid=""
-  grep -q "no display to open a window on" "$work/window.txt" || [ ! -s "$work/window.txt" ] || break
-  echo "attempt $attempt: exit status $ended: $(cat "$work/window.txt")"
-  sleep 0.2
-done
+# open_window OUTPUT ARGS...: starts the program with --window and ARGS, its output in
+# OUTPUT; sets program_pid and window (empty if none came up after three tries; ended:
+# the last exit status). Both windows of this test are opened so.
+open_window() {
+  local output=$1
+  shift
+  ended=""
+  for attempt in 1 2 3; do
+    "$program" --window "$@" >"$output" 2>&1 &
+    program_pid=$!
+    window=$(window_named "^$chapter: ")
+    [ -z "$window" ] || return 0
+    kill -0 $program_pid 2>/dev/null && return 0  # running, with no window: fails below
+    ended=0
+    wait $program_pid || ended=$?
+    program_pid=""
+    grep -q "no display to open a window on" "$output" || [ ! -s "$output" ] || return 0
+    echo "attempt $attempt: exit status $ended: $(cat "$output")"
+    sleep 0.2
+  done
+}
+open_window "$work/window.txt" "${shown[@]/#/--figure=}" --output "$work/saved"
 if [ -z "$window" ]; then
   cat "$work/window.txt"
   fail "no window titled '$chapter: ...'${ended:+ (the program ended, exit status $ended)}"
@@ -182,10 +190,12 @@ done
 # saves the whole figure or nothing, and leaves no other file behind (no half-written or
 # temporary one).
 if [ -n "$slow" ]; then
-  "$program" --window --figure "$slow" --output "$work/closed" >"$work/closed.txt" 2>&1 &
-  program_pid=$!
-  window=$(window_named "^$chapter")
-  [ -n "$window" ] || { fail "no window to close"; exit 1; }
+  open_window "$work/closed.txt" --figure "$slow" --output "$work/closed"
+  if [ -z "$window" ]; then
+    cat "$work/closed.txt"
+    fail "no window to close${ended:+ (the program ended, exit status $ended)}"
+    exit 1
+  fi
   xdotool windowfocus --sync "$window" key s
   kill -TERM $program_pid
   status=0
