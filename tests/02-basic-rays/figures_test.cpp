@@ -41,6 +41,25 @@ TEST_CASE("pinned pixels of the three-sphere scene", "[figures]") {
   CHECK(canvas.GetPixel(0, 0) == kRed);
 }
 
+TEST_CASE("pinned pixels of the three spheres on a 600x400 canvas with a 1.5 x 1 viewport",
+          "[figures]") {
+  // Square pixels: 400 to a viewport unit both ways, so a pixel's ray is
+  // (x / 400, y / 400, 1). Worked by hand from the discriminant of each sphere:
+  // along x = 200 (towards the blue sphere's centre, (0.5, s, 1)) the blue sphere spans
+  // |s| <= 0.2565, so y <= 102; the green one spans x / 400 in [-0.824, -0.243] on y = 0.
+  // A y scaled by the canvas's width (600) would reach y = 153, an x scaled by its
+  // height would squeeze the green sphere to x in [-220, -65].
+  Scene scene = SceneThreeSpheres();
+  scene.viewport = {1.5, 1, 1};
+  Canvas canvas(600, 400);
+  RenderScene(scene, canvas);
+  CHECK(canvas.GetPixel(200, 95) == kBlue);
+  CHECK(canvas.GetPixel(200, 120) == kWhite);
+  CHECK(canvas.GetPixel(-280, 0) == kGreen);
+  CHECK(canvas.GetPixel(-80, 0) == kWhite);
+  CHECK(canvas.GetPixel(0, -150) == kRed);
+}
+
 TEST_CASE("fig-2-11 matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-2-11");
 }

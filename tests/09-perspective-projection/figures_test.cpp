@@ -34,6 +34,21 @@ TEST_CASE("the book's cube: only part of its back face and edges reach the canva
   CHECK(canvas.GetPixel(0, 0) == Rgb8{255, 255, 255});
 }
 
+TEST_CASE("pinned pixels of the cube on a 600x400 canvas with a 1.5 x 1 viewport", "[figures]") {
+  // Square pixels: 400 to a viewport unit both ways. The front face (z = 5) lands at
+  // x = -2/5 and -1/5 of 400 = -160 and -80, y = +-0.5/5 of 400 = +-40; the back face
+  // (z = 6) at y = +-33.3. A y scaled by the canvas's width would put the front face's
+  // top at 60, an x scaled by its height its left side at -107.
+  Canvas canvas(600, 400);
+  DrawCube(DemoCube(), canvas, Viewport{1.5, 1, 1});
+  CHECK(canvas.GetPixel(-160, 0) == Rgb8{0, 0, 255});   // front face, left edge
+  CHECK(canvas.GetPixel(-120, 40) == Rgb8{0, 0, 255});  // front face, top edge
+  CHECK(canvas.GetPixel(-80, 0) == Rgb8{0, 0, 255});    // front face, right edge
+  CHECK(canvas.GetPixel(-100, 33) == Rgb8{255, 0, 0});  // back face, top edge
+  CHECK(canvas.GetPixel(-100, 0) == Rgb8{255, 255, 255});
+  CHECK(canvas.GetPixel(-120, 60) == Rgb8{255, 255, 255});
+}
+
 TEST_CASE("fig-9-4 matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-9-4");
 }
