@@ -3,19 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace {
-
-// A float at or below v, and one at or above: the float box holds the double one.
-float Down(double v) {
-  const float f = static_cast<float>(v);
-  return f > v ? std::nextafter(f, -HUGE_VALF) : f;
-}
-
-float Up(double v) {
-  const float f = static_cast<float>(v);
-  return f < v ? std::nextafter(f, HUGE_VALF) : f;
-}
 
 // A ray as the packed nodes test it: per axis, 1/D and which bound of a slab the
 // ray meets first (the max when D < 0).
@@ -33,21 +23,41 @@ SlabRay MakeSlabRay(const Ray& ray) {
   return slab;
 }
 
+// Two doubles, one per child, worked on together (a GCC and Clang vector type: one
+// SSE2 register on x86-64, one NEON register on ARM), and two floats, as the packed
+// node stores a bound of both children.
+using Pair = double __attribute__((vector_size(16)));
+using FloatPair = float __attribute__((vector_size(8)));
+
+inline Pair Load(const float (&both)[2]) {
+  FloatPair f;
+  std::memcpy(&f, both, sizeof f);
+  return __builtin_convertvector(f, Pair);
+}
+
+// std::max(a, b) and std::min(a, b), lane by lane, with the same answer when b is NaN: a.
+inline Pair Max(Pair a, Pair b) {
+  return a < b ? b : a;
+}
+inline Pair Min(Pair a, Pair b) {
+  return b < a ? b : a;
+}
+
 // RayHitsBox for the two children of a packed node at once, on their float boxes, in
 // the same double arithmetic with the slab bounds taken in the order the ray meets
 // them instead of sorted after. A ray parallel to a slab (1/D = +-inf) gets -inf or
-// +inf from it, or NaN exactly on its boundary, which std::max and std::min as called
-// here ignore: the same answers as RayHitsBox's test for D = 0.
+// +inf from it, or NaN exactly on its boundary, which Max and Min ignore: the same
+// answers as RayHitsBox's test for D = 0.
 inline void RayHitsChildren(const float (&bounds)[2][3][2], const SlabRay& ray, double t_min,
                             double t_max, double (&enter)[2], bool (&hits)[2]) {
-  double near[2] = {t_min, t_min};
-  double far[2] = {t_max, t_max};
+  Pair near = {t_min, t_min};
+  Pair far = {t_max, t_max};
   for (int axis = 0; axis < 3; ++axis) {
     const int first = ray.first[axis];
-    for (int c = 0; c < 2; ++c) {
-      near[c] = std::max(near[c], (bounds[first][axis][c] - ray.O[axis]) * ray.inv_D[axis]);
-      far[c] = std::min(far[c], (bounds[1 - first][axis][c] - ray.O[axis]) * ray.inv_D[axis]);
-    }
+    const Pair O = {ray.O[axis], ray.O[axis]};
+    const Pair inv_D = {ray.inv_D[axis], ray.inv_D[axis]};
+    near = Max(near, (Load(bounds[first][axis]) - O) * inv_D);
+    far = Min(far, (Load(bounds[1 - first][axis]) - O) * inv_D);
   }
   for (int c = 0; c < 2; ++c) {
     enter[c] = near[c];
@@ -67,10 +77,10 @@ int Bvh::Pack(int node) {
   packed_.emplace_back();
   const int children[2] = {node + 1, nodes_[node].second_child};
   for (int c = 0; c < 2; ++c) {
-    const Box& box = nodes_[children[c]].box;
+    const FloatBox& box = nodes_[children[c]].box;
     for (int axis = 0; axis < 3; ++axis) {
-      packed_[index].bounds[0][axis][c] = Down(box.min[axis]);
-      packed_[index].bounds[1][axis][c] = Up(box.max[axis]);
+      packed_[index].bounds[0][axis][c] = box.min[axis];
+      packed_[index].bounds[1][axis][c] = box.max[axis];
     }
     const int child = Pack(children[c]);  // may move packed_: index, not a reference
     packed_[index].child[c] = child;
@@ -89,7 +99,7 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
   const SlabRay slab = MakeSlabRay(ray);
   double t_root = 0;
   count.Boxes(1);
-  if (!RayHitsBox(nodes_[0].box, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
+  if (!RayHitsBox(root_box_, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
     return;
   }
   struct Entry {

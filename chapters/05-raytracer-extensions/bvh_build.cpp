@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <typeinfo>
 #include <utility>
 
 namespace {
@@ -21,12 +23,36 @@ constexpr int kLargeGroup = 4096;
 constexpr double kBoxTestCost = 1;  // relative to one object test
 constexpr double kObjectTestCost = 1;
 
-Vec3 Centre(const Box& box) {
-  return (box.min + box.max) * 0.5;
+using Int4 = int __attribute__((vector_size(16)));
+
+// A float at or below v, and one at or above: the float box holds the double one.
+float Down(double v) {
+  const float f = static_cast<float>(v);
+  return f > v ? std::nextafter(f, -HUGE_VALF) : f;
 }
 
-double SurfaceArea(const Box& box) {
-  const Vec3 size = box.max - box.min;
+float Up(double v) {
+  const float f = static_cast<float>(v);
+  return f < v ? std::nextafter(f, HUGE_VALF) : f;
+}
+
+// The float box around a double one: each bound rounded outwards.
+FloatBox Rounded(const Box& box) {
+  FloatBox rounded;
+  for (int axis = 0; axis < 3; ++axis) {
+    rounded.min[axis] = Down(box.min[axis]);
+    rounded.max[axis] = Up(box.max[axis]);
+  }
+  return rounded;
+}
+
+Vec3 Size(const FloatBox& box) {
+  const Float4 size = box.max - box.min;
+  return {size[0], size[1], size[2]};
+}
+
+double SurfaceArea(const FloatBox& box) {
+  const Vec3 size = Size(box);
   return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
 }
 
@@ -37,18 +63,19 @@ int LongestAxis(const Vec3& size) {
   return size.y >= size.z ? 1 : 2;
 }
 
-// Which of kBins equal slices of the centres' box, along an axis, a centre falls in.
+// Which of kBins equal slices of the centres' box a centre falls in, along x, y and z.
 struct Binning {
-  Vec3 min;
-  Vec3 scale;  // kBins / extent; 0 along an axis where all centres coincide
-  int Of(const Vec3& centre, int axis) const {
-    return std::min(kBins - 1, static_cast<int>((centre[axis] - min[axis]) * scale[axis]));
+  Float4 min;
+  Float4 scale;  // kBins / extent; 0 along an axis where all centres coincide
+  Int4 Of(const Float4& centre) const {
+    const Int4 bin = __builtin_convertvector((centre - min) * scale, Int4);
+    return bin < kBins - 1 ? bin : kBins - 1;
   }
 };
 
 // The objects whose centres fall in one slice, for the heuristic: their box and count.
 struct Bin {
-  Box box;
+  FloatBox box;
   int count = 0;
 };
 
@@ -63,7 +90,7 @@ Plane CheapestPlane(const Bins& bins, double area) {
   // Right of plane p: bins [p, kBins), swept from the right first.
   double right_area[kBins] = {};
   int right_count[kBins] = {};
-  Box right;
+  FloatBox right;
   int n = 0;
   for (int p = kBins - 1; p > 0; --p) {
     right = Union(right, bins[p].box);
@@ -72,7 +99,7 @@ Plane CheapestPlane(const Bins& bins, double area) {
     right_count[p] = n;
   }
   Plane best;
-  Box left;
+  FloatBox left;
   n = 0;
   for (int p = 1; p < kBins; ++p) {
     left = Union(left, bins[p - 1].box);
@@ -91,38 +118,34 @@ Plane CheapestPlane(const Bins& bins, double area) {
 
 }  // namespace
 
-void Bvh::Group::Add(const Bound& bound) {
-  box = Union(box, bound.box);
-  centres = Union(centres, {bound.centre, bound.centre});
-  ++count;
-  if (bound.area > largest) {
-    second = largest;
-    largest = bound.area;
-  } else {
-    second = std::max(second, bound.area);
-  }
-}
-
 Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   // The build reorders these in place, which keeps its passes over them in memory
   // order; order_ takes the objects' final order.
   std::vector<Bound> items;
   items.reserve(objects.size());
-  for (const auto& object : objects) {
-    objects_.push_back(object.get());
-    const Box box = object->Bounds();
-    items.push_back({box, Centre(box), SurfaceArea(box), static_cast<int>(items.size())});
+  // The spheres, found while each object is at hand (Sphere is final: its exact type).
+  std::vector<const Sphere*> sphere_of;
+  sphere_of.reserve(objects.size());
+  for (const auto& pointer : objects) {
+    const Object& object = *pointer;
+    objects_.push_back(&object);
+    const FloatBox box = Rounded(object.Bounds());
+    items.push_back({box, static_cast<float>(SurfaceArea(box)), static_cast<int>(items.size())});
+    sphere_of.push_back(typeid(object) == typeid(Sphere) ? static_cast<const Sphere*>(&object)
+                                                         : nullptr);
   }
   const int count = static_cast<int>(objects.size());
   nodes_.reserve(objects.size());
   if (count > 0) {
     Build(0, Summarise(0, count, items), items, 1);
     root_ = Pack(0);
+    const FloatBox& root = nodes_[0].box;
+    root_box_ = {{root.min[0], root.min[1], root.min[2]}, {root.max[0], root.max[1], root.max[2]}};
   }
   spheres_.reserve(items.size());
   for (const Bound& item : items) {
     order_.push_back(item.object);
-    const auto* sphere = dynamic_cast<const Sphere*>(objects_[item.object]);
+    const Sphere* sphere = sphere_of[item.object];
     slot_spheres_.push_back(sphere != nullptr ? static_cast<int>(spheres_.size()) : -1);
     if (sphere != nullptr) {
       spheres_.push_back(*sphere);
@@ -173,12 +196,11 @@ void Bvh::Build(int first, const Group& group, std::vector<Bound>& items, int de
 
 // An object larger than all the others together (chapter 4's ground, a sphere of radius
 // 5000) would make every box above it as large as itself, and every ray would enter
-// them all: it gets a leaf of its own, beside the tree of the rest. The others' box is
-// at least as large as the next largest object, so only a group whose largest object
-// beats that is gone over.
+// them all: it gets a leaf of its own, beside the tree of the rest. Only a group whose
+// box the largest object fills at least half of (by area) is gone over.
 int Bvh::SplitOffLargest(int first, const Group& group, std::vector<Bound>& items,
                          Group (&children)[2]) {
-  if (!(group.largest > group.second)) {
+  if (!(2 * group.largest > SurfaceArea(group.box))) {
     return 0;
   }
   int largest = first;
@@ -187,7 +209,7 @@ int Bvh::SplitOffLargest(int first, const Group& group, std::vector<Bound>& item
       largest = i;
     }
   }
-  Box others;
+  FloatBox others;
   for (int i = first; i < first + group.count; ++i) {
     if (i != largest) {
       others = Union(others, items[i].box);
@@ -206,12 +228,12 @@ int Bvh::SplitOffLargest(int first, const Group& group, std::vector<Bound>& item
 // most.
 int Bvh::SplitAtMedian(int first, const Group& group, std::vector<Bound>& items,
                        Group (&children)[2]) {
-  const int axis = LongestAxis(group.centres.max - group.centres.min);
+  const int axis = LongestAxis(Size(group.centres));
   const int half = group.count / 2;
   std::nth_element(items.begin() + first, items.begin() + first + half,
                    items.begin() + first + group.count, [&](const Bound& a, const Bound& b) {
-                     const double ca = a.centre[axis];
-                     const double cb = b.centre[axis];
+                     const float ca = Centre(a.box)[axis];
+                     const float cb = Centre(b.box)[axis];
                      return ca < cb || (ca == cb && a.object < b.object);
                    });
   children[0] = Summarise(first, half, items);
@@ -227,21 +249,22 @@ int Bvh::SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& i
                             Group (&children)[2]) {
   // A large group is binned only along the axis where its centres spread most: a third
   // of the work, where the cuts are all much the same.
-  const int longest = LongestAxis(group.centres.max - group.centres.min);
-  Binning binning{group.centres.min, {0, 0, 0}};
+  const int longest = LongestAxis(Size(group.centres));
+  Binning binning{group.centres.min, Float4{}};
   for (int axis = 0; axis < 3; ++axis) {
-    const double extent = group.centres.max[axis] - group.centres.min[axis];
+    const float extent = group.centres.max[axis] - group.centres.min[axis];
     const bool binned = group.count <= kLargeGroup || axis == longest;
     binning.scale[axis] = extent > 0 && binned ? kBins / extent : 0;
   }
   std::array<std::array<Bin, kBins>, 3> bins;
   for (int i = first; i < first + group.count; ++i) {
     const Bound& bound = items[i];
+    const Int4 bin = binning.Of(Centre(bound.box));
     for (int axis = 0; axis < 3; ++axis) {
       if (binning.scale[axis] > 0) {
-        Bin& bin = bins[axis][binning.Of(bound.centre, axis)];
-        bin.box = Union(bin.box, bound.box);
-        ++bin.count;
+        Bin& each = bins[axis][bin[axis]];
+        each.box = Union(each.box, bound.box);
+        ++each.count;
       }
     }
   }
@@ -269,18 +292,21 @@ int Bvh::SplitBySurfaceArea(int first, const Group& group, std::vector<Bound>& i
     return half;
   }
   // Partitions the items as std::partition would, summing up each side on the way.
+  Group sides[2];
   int left = first;
   int right = first + group.count - 1;
   while (left <= right) {
     const Bound& bound = items[left];
-    if (binning.Of(bound.centre, best_axis) < best.index) {
-      children[0].Add(bound);
+    if (binning.Of(Centre(bound.box))[best_axis] < best.index) {
+      sides[0].Add(bound);
       ++left;
     } else {
-      children[1].Add(bound);
+      sides[1].Add(bound);
       std::swap(items[left], items[right--]);
     }
   }
+  children[0] = sides[0];
+  children[1] = sides[1];
   return children[0].count;
 }
 
