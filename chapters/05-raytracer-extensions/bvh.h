@@ -45,6 +45,11 @@ class Bvh {
   Hit Closest(const Ray& ray, double t_min, double t_max, int& object) const;
   // Whether anything is hit in [t_min, t_max]; stops at the first hit found.
   bool Any(const Ray& ray, double t_min, double t_max, int& object) const;
+  // Whether scene object `object` is hit in [t_min, t_max], tested on the hierarchy's
+  // copy of it, which lies beside its neighbours in memory.
+  bool Hits(int object, const Ray& ray, double t_min, double t_max) const {
+    return IntersectSlot(slot_of_[object], ray, t_min, t_max).t < cgfs::kInf;
+  }
 
   // The work of Closest for one ray, counted: box tests (the root's, and two per
   // inner node visited) and object tests. Tests and the chapter's README use it.
@@ -141,6 +146,7 @@ class Bvh {
   std::vector<int> slot_spheres_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
+  std::vector<int> slot_of_;  // the inverse of order_: each object's slot
   std::vector<PackedNode> packed_;
   std::vector<Leaf> leaves_;
   Box root_box_;  // the root node's box, for the walk's first test

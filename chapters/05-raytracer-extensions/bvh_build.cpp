@@ -143,7 +143,9 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
     root_box_ = {{root.min[0], root.min[1], root.min[2]}, {root.max[0], root.max[1], root.max[2]}};
   }
   spheres_.reserve(items.size());
+  slot_of_.resize(items.size());
   for (const Bound& item : items) {
+    slot_of_[item.object] = static_cast<int>(order_.size());
     order_.push_back(item.object);
     const Sphere* sphere = sphere_of[item.object];
     slot_spheres_.push_back(sphere != nullptr ? static_cast<int>(spheres_.size()) : -1);
