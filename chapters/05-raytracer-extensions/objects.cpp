@@ -71,7 +71,7 @@ std::pair<double, double> IntersectRaySphere(const Ray& ray, const Sphere& spher
 }
 
 std::pair<double, double> Sphere::Roots(const Ray& ray) const {
-  return ray.use_cache ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
+  return cached ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
 }
 
 // The nearest of the two roots inside [t_min, t_max], tested in the order chapter 4's
@@ -111,6 +111,7 @@ std::shared_ptr<Object> Sphere::Prepared(const Vec3& camera_position) const {
   prepared->radius_squared = radius * radius;
   const Vec3 CO = camera_position - center;
   prepared->camera_CO_dot_CO = glm::dot(CO, CO);
+  prepared->cached = true;
   return prepared;
 }
 

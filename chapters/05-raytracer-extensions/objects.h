@@ -16,16 +16,16 @@ using cgfs::Color;
 using cgfs::Vec3;
 
 // A ray O + tD, with what the "Caching Invariants" section computes once per ray
-// instead of once per sphere.
+// instead of once per sphere: <D,D>, and whether O is the camera's position, where the
+// <CO,CO> a prepared sphere cached holds. Only prepared spheres use them; the others
+// compute every value where the book does.
 struct Ray {
-  Vec3 O{0, 0, 0};
-  Vec3 D{0, 0, 1};
-  // Whether the intersection functions may use the cached values below and the
-  // values each sphere cached when the scene was prepared (r², and <CO,CO> for rays
-  // that start at the camera). Off, every value is computed where the book does.
-  bool use_cache = false;
-  bool from_camera = false;  // O is the camera's position
-  double D_dot_D = 0;        // <D,D>, when use_cache
+  Ray(const Vec3& origin, const Vec3& direction, bool starts_at_camera = false)
+      : O(origin), D(direction), from_camera(starts_at_camera), D_dot_D(glm::dot(D, D)) {}
+  Vec3 O;
+  Vec3 D;
+  bool from_camera;
+  double D_dot_D;
 };
 
 class Object;
@@ -117,14 +117,16 @@ class Sphere final : public Solid {
   Box Bounds() const override;
   std::shared_ptr<Object> Prepared(const Vec3& camera_position) const override;
 
-  // Both roots of the ray's quadratic, with the cached values if the ray may use them.
+  // Both roots of the ray's quadratic, with the cached values if this copy has them.
   std::pair<double, double> Roots(const Ray& ray) const;
 
   Vec3 center{0, 0, 0};
   double radius = 1;
-  // "Caching Invariants": r², and <CO,CO> for rays from the camera.
+  // "Caching Invariants": r², and <CO,CO> for rays from the camera, set in the copies
+  // Prepared makes, which test rays with them.
   double radius_squared = 1;
   double camera_CO_dot_CO = 0;
+  bool cached = false;
 };
 
 // "Ray Meets Sphere": the two solutions t1 >= t2 of the quadratic

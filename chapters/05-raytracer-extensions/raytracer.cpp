@@ -15,22 +15,18 @@ Vec3 CanvasToViewport(double x, double y, const Canvas& canvas, const Viewport& 
 
 void PrepareScene(Scene& scene, const Optimizations& optimizations) {
   scene.optimizations = optimizations;
-  for (std::shared_ptr<Object>& object : scene.objects) {
-    if (std::shared_ptr<Object> prepared = object->Prepared(scene.camera.position)) {
-      object = std::move(prepared);
+  if (optimizations.cache) {
+    for (std::shared_ptr<Object>& object : scene.objects) {
+      if (std::shared_ptr<Object> prepared = object->Prepared(scene.camera.position)) {
+        object = std::move(prepared);
+      }
     }
   }
   scene.bvh = optimizations.bvh ? std::make_shared<const Bvh>(scene.objects) : nullptr;
 }
 
 Ray MakeRay(const Vec3& O, const Vec3& D, const Scene& scene) {
-  Ray ray{O, D};
-  if (scene.optimizations.cache) {
-    ray.use_cache = true;
-    ray.from_camera = O == scene.camera.position;  // the spheres' cached <CO,CO> hold for it
-    ray.D_dot_D = glm::dot(D, D);
-  }
-  return ray;
+  return Ray(O, D, O == scene.camera.position);  // the spheres' cached <CO,CO> hold for it
 }
 
 // Listing 4-1, now over any object: keep the nearest hit inside [t_min, t_max].

@@ -72,8 +72,8 @@ struct Scene {
 // were, so that two renders of one scene from two cameras can run at once.
 void PrepareScene(Scene& scene, const Optimizations& optimizations);
 
-// The ray O + tD as the intersection functions take it: with <D,D> computed once,
-// when the scene caches invariants.
+// The ray O + tD as the intersection functions take it: with <D,D> computed once, and
+// whether it starts at the scene's camera (for the spheres that cached <CO,CO>).
 Ray MakeRay(const Vec3& O, const Vec3& D, const Scene& scene);
 
 // "Canvas to Viewport": the point of the viewport that canvas pixel (x, y) looks

@@ -57,7 +57,7 @@ TEST_CASE("IntersectRaySphere with cached invariants finds the very same roots",
     const bool from_camera = i % 2 == 0;
     const Vec3 O = from_camera ? camera : Vec3{random.Between(-1, 1), 0, random.Between(-1, 1)};
     const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(0.2, 2)};
-    Ray ray{O, D, true, from_camera, glm::dot(D, D)};
+    const Ray ray(O, D, from_camera);
     const auto book = IntersectRaySphere(O, D, sphere);
     const auto cached = IntersectRaySphere(ray, sphere);
     REQUIRE(book.first == cached.first);
