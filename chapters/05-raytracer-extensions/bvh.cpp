@@ -7,6 +7,12 @@
 
 namespace {
 
+// A box's surface area (its half would do: only compared).
+double Area(const FloatBox& box) {
+  const Float4 size = box.max - box.min;
+  return double{size[0]} * size[1] + double{size[1]} * size[2] + double{size[2]} * size[0];
+}
+
 // A ray as the packed nodes test it: per axis, 1/D and which bound of a slab the
 // ray meets first (the max when D < 0).
 struct SlabRay {
@@ -29,7 +35,7 @@ SlabRay MakeSlabRay(const Ray& ray) {
 using Pair = double __attribute__((vector_size(16)));
 using FloatPair = float __attribute__((vector_size(8)));
 
-inline Pair Load(const float (&both)[2]) {
+inline Pair Load(const float* both) {
   FloatPair f;
   std::memcpy(&f, both, sizeof f);
   return __builtin_convertvector(f, Pair);
@@ -43,31 +49,36 @@ inline Pair Min(Pair a, Pair b) {
   return b < a ? b : a;
 }
 
-// RayHitsBox for the two children of a packed node at once, on their float boxes, in
+// RayHitsBox for the four children of a packed node at once, on their float boxes, in
 // the same double arithmetic with the slab bounds taken in the order the ray meets
 // them instead of sorted after. A ray parallel to a slab (1/D = +-inf) gets -inf or
 // +inf from it, or NaN exactly on its boundary, which Max and Min ignore: the same
-// answers as RayHitsBox's test for D = 0.
-inline void RayHitsChildren(const float (&bounds)[2][3][2], const SlabRay& ray, double t_min,
-                            double t_max, double (&enter)[2], bool (&hits)[2]) {
-  Pair near = {t_min, t_min};
-  Pair far = {t_max, t_max};
-  for (int axis = 0; axis < 3; ++axis) {
-    const int first = ray.first[axis];
-    const Pair O = {ray.O[axis], ray.O[axis]};
-    const Pair inv_D = {ray.inv_D[axis], ray.inv_D[axis]};
-    near = Max(near, (Load(bounds[first][axis]) - O) * inv_D);
-    far = Min(far, (Load(bounds[1 - first][axis]) - O) * inv_D);
-  }
-  for (int c = 0; c < 2; ++c) {
-    enter[c] = near[c];
-    hits[c] = near[c] <= far[c];
+// answers as RayHitsBox's test for D = 0. An unused child's box, from +inf to -inf,
+// is never hit.
+inline void RayHitsChildren(const float (&bounds)[2][3][4], const SlabRay& ray, double t_min,
+                            double t_max, double (&enter)[4], bool (&hits)[4]) {
+  for (int half = 0; half < 2; ++half) {
+    Pair near = {t_min, t_min};
+    Pair far = {t_max, t_max};
+    for (int axis = 0; axis < 3; ++axis) {
+      const int first = ray.first[axis];
+      const Pair O = {ray.O[axis], ray.O[axis]};
+      const Pair inv_D = {ray.inv_D[axis], ray.inv_D[axis]};
+      near = Max(near, (Load(&bounds[first][axis][2 * half]) - O) * inv_D);
+      far = Min(far, (Load(&bounds[1 - first][axis][2 * half]) - O) * inv_D);
+    }
+    for (int c = 0; c < 2; ++c) {
+      enter[2 * half + c] = near[c];
+      hits[2 * half + c] = near[c] <= far[c];
+    }
   }
 }
 
 }  // namespace
 
 // Appends node's subtree to packed_ (inner nodes) and leaves_; its child reference.
+// An inner node takes up to four children: its own two, and in place of an inner one
+// its two, the largest first.
 int Bvh::Pack(int node) {
   if (nodes_[node].count > 0) {
     leaves_.push_back({nodes_[node].first, nodes_[node].count});
@@ -75,24 +86,44 @@ int Bvh::Pack(int node) {
   }
   const int index = static_cast<int>(packed_.size());
   packed_.emplace_back();
-  const int children[2] = {node + 1, nodes_[node].second_child};
-  for (int c = 0; c < 2; ++c) {
-    const FloatBox& box = nodes_[children[c]].box;
-    for (int axis = 0; axis < 3; ++axis) {
-      packed_[index].bounds[0][axis][c] = box.min[axis];
-      packed_[index].bounds[1][axis][c] = box.max[axis];
+  int children[4] = {node + 1, nodes_[node].second_child};
+  int count = 2;
+  while (count < 4) {
+    int widest = -1;
+    for (int c = 0; c < count; ++c) {
+      const Node& child = nodes_[children[c]];
+      if (child.count == 0 &&
+          (widest < 0 || Area(child.box) > Area(nodes_[children[widest]].box))) {
+        widest = c;
+      }
     }
-    const int child = Pack(children[c]);  // may move packed_: index, not a reference
+    if (widest < 0) {
+      break;
+    }
+    const int inner = children[widest];
+    children[widest] = inner + 1;
+    children[count++] = nodes_[inner].second_child;
+  }
+  packed_[index].count = count;
+  for (int c = 0; c < 4; ++c) {
+    for (int axis = 0; axis < 3; ++axis) {
+      packed_[index].bounds[0][axis][c] = c < count ? nodes_[children[c]].box.min[axis] : kFloatInf;
+      packed_[index].bounds[1][axis][c] =
+          c < count ? nodes_[children[c]].box.max[axis] : -kFloatInf;
+    }
+    // Pack may move packed_: index, not a reference.
+    const int child = c < count ? Pack(children[c]) : 0;
     packed_[index].child[c] = child;
   }
   return index;
 }
 
 // Walks the nodes whose box the ray enters within [t_min, min(t_max, best)], the
-// nearer child first, so that the farther one is often skipped, and calls visit(leaf)
-// for each leaf reached; stops when visit returns true. `best` is read at every step:
-// Closest narrows it as it finds hits. The tree's depth, and so the stack, stays
-// under 64 (Build) for any scene that fits in memory.
+// nearest child first, so that the farther ones are often skipped, and calls
+// visit(leaf) for each leaf reached; stops when visit returns true. `best` is read at
+// every step: Closest narrows it as it finds hits. The build's tree is under 64
+// levels deep (Build) for any scene that fits in memory, so this one is too, and each
+// level leaves at most three children on the stack.
 template <typename Visit, typename Count>
 void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit,
                Count& count) const {
@@ -106,27 +137,38 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
     int child;
     double t_enter;
   };
-  Entry stack[64];
+  Entry stack[3 * 64];
   int size = 0;
   stack[size++] = {root_, t_root};
   while (size > 0) {
     Entry entry = stack[--size];
-    // Down the nearer child, the farther one left on the stack, until a leaf.
+    // Down the nearest child, the others left on the stack nearest on top, until a leaf.
     while (entry.child >= 0 && entry.t_enter <= best) {
       const PackedNode& node = packed_[entry.child];
-      count.Boxes(2);
-      double enter[2];
-      bool hits[2];
+      count.Boxes(node.count);
+      double enter[4];
+      bool hits[4];
       RayHitsChildren(node.bounds, slab, t_min, std::min(t_max, best), enter, hits);
-      const int near = (hits[1] && (!hits[0] || enter[1] < enter[0])) ? 1 : 0;
-      if (!hits[near]) {
-        entry.t_enter = cgfs::kInf;  // neither child: back to the stack
+      // The children hit, farthest first.
+      Entry order[4];
+      int n = 0;
+      for (int c = 0; c < 4; ++c) {
+        if (hits[c]) {
+          int k = n++;
+          for (; k > 0 && order[k - 1].t_enter < enter[c]; --k) {
+            order[k] = order[k - 1];
+          }
+          order[k] = {node.child[c], enter[c]};
+        }
+      }
+      if (n == 0) {
+        entry.t_enter = cgfs::kInf;  // no child: back to the stack
         break;
       }
-      if (hits[1 - near]) {
-        stack[size++] = {node.child[1 - near], enter[1 - near]};
+      for (int k = 0; k < n - 1; ++k) {
+        stack[size++] = order[k];
       }
-      entry = {node.child[near], enter[near]};
+      entry = order[n - 1];
     }
     // A leaf the ray enters before the best hit so far (it may have got nearer since
     // the leaf was put on the stack).

@@ -106,13 +106,16 @@ class Bvh {
                          Group (&children)[2]);
   int SplitAtMedian(int first, const Group& group, std::vector<Bound>& items, Group (&children)[2]);
 
-  // The tree as the rays walk it: an inner node holds its two children's boxes side
-  // by side, in float rounded outwards (a box can only grow, so no hit is lost), so
-  // that one 64-byte line serves both box tests. A child is an inner node's index, or
-  // ~i for leaves_[i].
+  // The tree as the rays walk it, four children to a node (as Embree's is): a node of
+  // the build's binary tree with, in place of each inner child, that child's own two
+  // (the larger first), so that a ray goes down half as many levels. A node holds its
+  // children's boxes side by side, in float rounded outwards (a box can only grow, so
+  // no hit is lost), in two 64-byte lines. A child is an inner node's index, or ~i for
+  // leaves_[i]; the unused ones (count < 4) have an empty box, which no ray enters.
   struct alignas(64) PackedNode {
-    float bounds[2][3][2];  // [min or max][axis][child]
-    int child[2];
+    float bounds[2][3][4];  // [min or max][axis][child]
+    int child[4];
+    int count;
   };
   struct Leaf {
     int first = 0;  // the objects order_[first, first + count)
