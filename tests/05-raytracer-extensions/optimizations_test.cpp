@@ -79,74 +79,6 @@ TEST_CASE("every exact optimisation draws every figure byte for byte as none doe
 
 namespace {
 
-// The scene prepared twice: with no optimisation, and with the hierarchy alone.
-std::pair<Scene, Scene> WithoutAndWithBvh(const Scene& scene) {
-  Scene plain = scene;
-  PrepareScene(plain, {});
-  Optimizations bvh;
-  bvh.bvh = true;
-  Scene with_bvh = scene;
-  PrepareScene(with_bvh, bvh);
-  return {plain, with_bvh};
-}
-
-// Rays that graze an object: through a point at distance r(1 - u) of a sphere's centre,
-// u in [0, 1e-3), or on a triangle's edge or corner, from a random side. A hierarchy
-// whose boxes are a hair too small, or that prunes a node a hair too early, misses
-// some of them; random rays almost never come so close.
-struct GrazingRay {
-  Vec3 O;
-  Vec3 D;
-};
-
-Vec3 RandomUnit(Random& random) {
-  const Vec3 v{random.Between(-1, 1), random.Between(-1, 1), random.Between(-1, 1)};
-  return glm::length(v) > 1e-3 ? v / glm::length(v) : Vec3{0, 0, 1};
-}
-
-GrazingRay Grazing(const Object& object, Random& random) {
-  const Vec3 D = RandomUnit(random);
-  Vec3 target;
-  if (const auto* sphere = dynamic_cast<const Sphere*>(&object)) {
-    // A point at the wanted distance from the centre, perpendicular to D.
-    Vec3 side = glm::cross(D, RandomUnit(random));
-    side /= glm::length(side);
-    target = sphere->center + side * (sphere->radius * (1 - 1e-3 * random.Next()));
-  } else if (const auto* triangle = dynamic_cast<const Triangle*>(&object)) {
-    const double w = random.Next();
-    target = random.Next() < 0.5 ? triangle->A * w + triangle->B * (1 - w) : triangle->C;
-  } else {
-    const Box box = object.Bounds();
-    target = box.min + (box.max - box.min) * random.Next();
-  }
-  return {target - D * (2 + 10 * random.Next()), D};
-}
-
-}  // namespace
-
-TEST_CASE("Bvh: grazing rays hit what the loop over every object hits", "[optimizations]") {
-  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
-    const int rays = each.objects.size() > 10000 ? 200 : 20000;
-    const auto [scene, with_bvh] = WithoutAndWithBvh(each);
-    Random random(3);
-    long hits = 0;
-    for (int i = 0; i < rays; ++i) {
-      const Object& object = *scene.objects[static_cast<std::size_t>(
-          random.Next() * static_cast<double>(scene.objects.size()))];
-      const auto [O, D] = Grazing(object, random);
-      const Hit plain = ClosestIntersection(O, D, 0, cgfs::kInf, scene);
-      const Hit fast = ClosestIntersection(O, D, 0, cgfs::kInf, with_bvh);
-      INFO("ray " << i << " from (" << O.x << ", " << O.y << ", " << O.z << ")");
-      REQUIRE(plain.object == fast.object);
-      REQUIRE(plain.t == fast.t);
-      hits += plain.object >= 0;
-    }
-    CHECK(hits > rays / 4);  // they do hit: most graze what they aim at, or pass by in front
-  }
-}
-
-namespace {
-
 // An object every ray meets (its box is everything near the camera) that never shows:
 // it only notes which threads ask, and takes a moment to answer, so that every worker
 // gets tiles to draw.
@@ -180,33 +112,6 @@ TEST_CASE("RenderScene with all optimisations draws on one worker per core", "[o
   RenderScene(scene, 0, canvas, AllOptimizations());
   const auto cores = std::max(1U, std::thread::hardware_concurrency());
   CHECK(recorder->Threads() == std::min<std::size_t>(cores, 4));
-}
-
-TEST_CASE("Bvh finds what the loop over every object finds", "[optimizations]") {
-  // Random rays through the sphere field and the torus, from the camera and from
-  // points among the objects: the same object, the same t, the same yes or no.
-  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
-    // The torus has 102 400 triangles for the loop to go through: fewer rays.
-    const int rays = each.objects.size() > 10000 ? 300 : 3000;
-    const auto [scene, with_bvh] = WithoutAndWithBvh(each);
-    Random random(11);
-    for (int i = 0; i < rays; ++i) {
-      const Vec3 O =
-          i % 2 == 0 ? Vec3{0, 0, 0}
-                     : Vec3{random.Between(-3, 3), random.Between(-1, 2), random.Between(4, 10)};
-      const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(-0.5, 1)};
-      const double t_max = i % 3 == 0 ? 1.0 : cgfs::kInf;
-      const Hit plain = ClosestIntersection(O, D, 0.001, t_max, scene);
-      const Hit fast = ClosestIntersection(O, D, 0.001, t_max, with_bvh);
-      REQUIRE(plain.object == fast.object);
-      REQUIRE(plain.t == fast.t);
-      int plain_object = -1;
-      int fast_object = -1;
-      REQUIRE(AnyIntersection(O, D, 0.001, t_max, scene, plain_object) ==
-              AnyIntersection(O, D, 0.001, t_max, with_bvh, fast_object));
-      REQUIRE((plain_object >= 0) == (plain.object >= 0));
-    }
-  }
 }
 
 TEST_CASE("IsInShadow: coherence and any-hit give Listing 4-3's answer", "[optimizations]") {
