@@ -62,9 +62,11 @@ GrazingRay Grazing(const Object& object, Random& random) {
 
 }  // namespace
 
+// The torus, whose 102 400 triangles make the loop slow, is checked against the grid
+// below, on many more rays than the loop could afford.
 TEST_CASE("Bvh: grazing rays hit what the loop over every object hits", "[optimizations]") {
-  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
-    const int rays = each.objects.size() > 10000 ? 200 : 20000;
+  for (const Scene& each : {SceneSphereField(1000), SceneCsgNested()}) {
+    const int rays = 20000;
     const auto [scene, with_bvh] = WithoutAndWithBvh(each);
     Random random(3);
     long hits = 0;
@@ -84,11 +86,10 @@ TEST_CASE("Bvh: grazing rays hit what the loop over every object hits", "[optimi
 }
 
 TEST_CASE("Bvh finds what the loop over every object finds", "[optimizations]") {
-  // Random rays through the sphere field and the torus, from the camera and from
+  // Random rays through the sphere field and the nested solid, from the camera and from
   // points among the objects: the same object, the same t, the same yes or no.
-  for (const Scene& each : {SceneSphereField(1000), SceneTorusMesh(), SceneCsgNested()}) {
-    // The torus has 102 400 triangles for the loop to go through: fewer rays.
-    const int rays = each.objects.size() > 10000 ? 300 : 3000;
+  for (const Scene& each : {SceneSphereField(1000), SceneCsgNested()}) {
+    const int rays = 3000;
     const auto [scene, with_bvh] = WithoutAndWithBvh(each);
     Random random(11);
     for (int i = 0; i < rays; ++i) {
