@@ -7,12 +7,6 @@
 
 namespace {
 
-// A box's surface area (its half would do: only compared).
-double Area(const FloatBox& box) {
-  const Float4 size = box.max - box.min;
-  return double{size[0]} * size[1] + double{size[1]} * size[2] + double{size[2]} * size[0];
-}
-
 // A ray as the packed nodes test it: per axis, 1/D and which bound of a slab the
 // ray meets first (the max when D < 0).
 struct SlabRay {
@@ -93,7 +87,7 @@ int Bvh::Pack(int node) {
     for (int c = 0; c < count; ++c) {
       const Node& child = nodes_[children[c]];
       if (child.count == 0 &&
-          (widest < 0 || Area(child.box) > Area(nodes_[children[widest]].box))) {
+          (widest < 0 || SurfaceArea(child.box) > SurfaceArea(nodes_[children[widest]].box))) {
         widest = c;
       }
     }

@@ -26,12 +26,18 @@ struct FloatBox {
   Float4 min = {kFloatInf, kFloatInf, kFloatInf, 0};
   Float4 max = {-kFloatInf, -kFloatInf, -kFloatInf, 0};
 };
-// The box around both, and the centre of a box (inline: the build takes millions).
+// The box around both, the centre of a box and its surface area (inline: the build
+// takes millions).
 inline FloatBox Union(const FloatBox& a, const FloatBox& b) {
   return {a.min < b.min ? a.min : b.min, a.max > b.max ? a.max : b.max};
 }
 inline Float4 Centre(const FloatBox& box) {
   return (box.min + box.max) * 0.5F;
+}
+inline double SurfaceArea(const FloatBox& box) {
+  const Float4 size = box.max - box.min;
+  const double x = size[0], y = size[1], z = size[2];
+  return 2 * (x * y + y * z + z * x);
 }
 
 class Bvh {

@@ -51,11 +51,6 @@ Vec3 Size(const FloatBox& box) {
   return {size[0], size[1], size[2]};
 }
 
-double SurfaceArea(const FloatBox& box) {
-  const Vec3 size = Size(box);
-  return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
-}
-
 int LongestAxis(const Vec3& size) {
   if (size.x >= size.y && size.x >= size.z) {
     return 0;
