@@ -118,16 +118,23 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   // order; order_ takes the objects' final order.
   std::vector<Bound> items;
   items.reserve(objects.size());
-  // The spheres, found while each object is at hand (Sphere is final: its exact type).
-  std::vector<const Sphere*> sphere_of;
+  // The prepared spheres' tests, taken while each object is at hand (Sphere is final:
+  // its exact type), in scene order; -1 for any other object.
+  std::vector<LeafSphere> scene_spheres;
+  std::vector<int> sphere_of;
   sphere_of.reserve(objects.size());
   for (const auto& pointer : objects) {
     const Object& object = *pointer;
     objects_.push_back(&object);
     const FloatBox box = Rounded(object.Bounds());
     items.push_back({box, static_cast<float>(SurfaceArea(box)), static_cast<int>(items.size())});
-    sphere_of.push_back(typeid(object) == typeid(Sphere) ? static_cast<const Sphere*>(&object)
-                                                         : nullptr);
+    const auto* sphere =
+        typeid(object) == typeid(Sphere) ? static_cast<const Sphere*>(&object) : nullptr;
+    sphere_of.push_back(sphere != nullptr && sphere->cached ? static_cast<int>(scene_spheres.size())
+                                                            : -1);
+    if (sphere_of.back() >= 0) {
+      scene_spheres.push_back({sphere->center, sphere->cache});
+    }
   }
   const int count = static_cast<int>(objects.size());
   nodes_.reserve(objects.size());
@@ -142,10 +149,10 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   for (const Bound& item : items) {
     slot_of_[item.object] = static_cast<int>(order_.size());
     order_.push_back(item.object);
-    const Sphere* sphere = sphere_of[item.object];
-    slot_spheres_.push_back(sphere != nullptr ? static_cast<int>(spheres_.size()) : -1);
-    if (sphere != nullptr) {
-      spheres_.push_back(*sphere);
+    const int sphere = sphere_of[item.object];
+    slot_spheres_.push_back(sphere >= 0 ? static_cast<int>(spheres_.size()) : -1);
+    if (sphere >= 0) {
+      spheres_.push_back(scene_spheres[sphere]);
     }
   }
 }

@@ -31,21 +31,6 @@ Hit Solid::Intersect(const Ray& ray, double t_min, double t_max) const {
   return {};
 }
 
-namespace {
-
-// The quadratic formula of Listing 2-5: t1 >= t2, or (inf, inf) without real roots.
-std::pair<double, double> QuadraticRoots(double a, double b, double c) {
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) {
-    return {cgfs::kInf, cgfs::kInf};
-  }
-  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
-  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
-  return {t1, t2};
-}
-
-}  // namespace
-
 // Listing 2-5, "Ray Meets Sphere": put the ray P = O + tD into the sphere equation
 // <P-C, P-C> = r^2 and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
 std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere) {
@@ -58,34 +43,13 @@ std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const
   return QuadraticRoots(a, b, c);
 }
 
-// "Caching Invariants": <D,D> comes with the ray, r² and the camera's <CO,CO> with
-// the sphere. Every other step is the one above.
-std::pair<double, double> IntersectRaySphere(const Ray& ray, const Sphere& sphere) {
-  const Vec3 CO = ray.O - sphere.center;
-
-  const double a = ray.D_dot_D;
-  const double b = 2 * glm::dot(CO, ray.D);
-  const double CO_dot_CO = ray.from_camera ? sphere.camera_CO_dot_CO : glm::dot(CO, CO);
-  const double c = CO_dot_CO - sphere.radius_squared;
-  return QuadraticRoots(a, b, c);
-}
-
 std::pair<double, double> Sphere::Roots(const Ray& ray) const {
-  return cached ? IntersectRaySphere(ray, *this) : IntersectRaySphere(ray.O, ray.D, *this);
+  return cached ? IntersectRaySphere(ray, center, cache) : IntersectRaySphere(ray.O, ray.D, *this);
 }
 
-// The nearest of the two roots inside [t_min, t_max], tested in the order chapter 4's
-// ClosestIntersection tests them.
 Hit Sphere::Intersect(const Ray& ray, double t_min, double t_max) const {
-  const auto [t1, t2] = Roots(ray);
-  Hit hit;
-  if (t_min <= t1 && t1 <= t_max && t1 < hit.t) {
-    hit = {t1, this};
-  }
-  if (t_min <= t2 && t2 <= t_max && t2 < hit.t) {
-    hit = {t2, this};
-  }
-  return hit;
+  const double t = NearestRoot(Roots(ray), t_min, t_max);
+  return t < cgfs::kInf ? Hit{t, this} : Hit{};
 }
 
 // "Constructive Solid Geometry": the ray is inside the sphere between its two roots.
@@ -108,9 +72,8 @@ Box Sphere::Bounds() const {
 
 std::shared_ptr<Object> Sphere::Prepared(const Vec3& camera_position) const {
   auto prepared = std::make_shared<Sphere>(*this);
-  prepared->radius_squared = radius * radius;
   const Vec3 CO = camera_position - center;
-  prepared->camera_CO_dot_CO = glm::dot(CO, CO);
+  prepared->cache = {radius * radius, glm::dot(CO, CO)};
   prepared->cached = true;
   return prepared;
 }

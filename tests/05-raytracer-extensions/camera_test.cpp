@@ -76,9 +76,9 @@ TEST_CASE("PrepareScene caches in copies: the scene it was copied from is left a
     REQUIRE(original != nullptr);
     REQUIRE(copy != nullptr);
     CHECK(copy != original);
-    CHECK(original->camera_CO_dot_CO == 0);  // never written
+    CHECK(original->cache.camera_CO_dot_CO == 0);  // never written
     const Vec3 CO = prepared.camera.position - copy->center;
-    CHECK(copy->camera_CO_dot_CO == glm::dot(CO, CO));
+    CHECK(copy->cache.camera_CO_dot_CO == glm::dot(CO, CO));
   }
 }
 

@@ -59,7 +59,7 @@ TEST_CASE("IntersectRaySphere with cached invariants finds the very same roots",
     const Vec3 D{random.Between(-1, 1), random.Between(-1, 1), random.Between(0.2, 2)};
     const Ray ray(O, D, from_camera);
     const auto book = IntersectRaySphere(O, D, sphere);
-    const auto cached = IntersectRaySphere(ray, sphere);
+    const auto cached = IntersectRaySphere(ray, sphere.center, sphere.cache);
     REQUIRE(book.first == cached.first);
     REQUIRE(book.second == cached.second);
   }
