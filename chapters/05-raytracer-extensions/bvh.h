@@ -51,8 +51,8 @@ class Bvh {
   Hit Closest(const Ray& ray, double t_min, double t_max, int& object) const;
   // Whether anything is hit in [t_min, t_max]; stops at the first hit found.
   bool Any(const Ray& ray, double t_min, double t_max, int& object) const;
-  // Whether scene object `object` is hit in [t_min, t_max], tested on the hierarchy's
-  // copy of it, which lies beside its neighbours in memory.
+  // Whether scene object `object` is hit in [t_min, t_max]; a prepared sphere is tested
+  // on the hierarchy's copy of what its test reads, which lies beside its neighbours'.
   bool Hits(int object, const Ray& ray, double t_min, double t_max) const {
     return IntersectSlot(slot_of_[object], ray, t_min, t_max).t < cgfs::kInf;
   }
