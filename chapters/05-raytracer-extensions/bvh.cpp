@@ -24,15 +24,13 @@ SlabRay MakeSlabRay(const Ray& ray) {
 }
 
 // Two doubles, one per child, worked on together (a GCC and Clang vector type: one
-// SSE2 register on x86-64, one NEON register on ARM), and two floats, as the packed
-// node stores a bound of both children.
+// SSE2 register on x86-64, one NEON register on ARM).
 using Pair = double __attribute__((vector_size(16)));
-using FloatPair = float __attribute__((vector_size(8)));
 
-inline Pair Load(const float* both) {
-  FloatPair f;
-  std::memcpy(&f, both, sizeof f);
-  return __builtin_convertvector(f, Pair);
+inline Pair Load(const double* both) {
+  Pair pair;
+  std::memcpy(&pair, both, sizeof pair);
+  return pair;
 }
 
 // std::max(a, b) and std::min(a, b), lane by lane, with the same answer when b is NaN: a.
@@ -43,13 +41,12 @@ inline Pair Min(Pair a, Pair b) {
   return b < a ? b : a;
 }
 
-// RayHitsBox for the four children of a packed node at once, on their float boxes, in
-// the same double arithmetic with the slab bounds taken in the order the ray meets
-// them instead of sorted after. A ray parallel to a slab (1/D = +-inf) gets -inf or
-// +inf from it, or NaN exactly on its boundary, which Max and Min ignore: the same
-// answers as RayHitsBox's test for D = 0. An unused child's box, from +inf to -inf,
-// is never hit.
-inline void RayHitsChildren(const float (&bounds)[2][3][4], const SlabRay& ray, double t_min,
+// RayHitsBox for the four children of a packed node at once, in the same arithmetic
+// with the slab bounds taken in the order the ray meets them instead of sorted after. A
+// ray parallel to a slab (1/D = +-inf) gets -inf or +inf from it, or NaN exactly on its
+// boundary, which Max and Min ignore: the same answers as RayHitsBox's test for D = 0.
+// An unused child's box, from +inf to -inf, is never hit.
+inline void RayHitsChildren(const double (&bounds)[2][3][4], const SlabRay& ray, double t_min,
                             double t_max, double (&enter)[4], bool (&hits)[4]) {
   for (int half = 0; half < 2; ++half) {
     Pair near = {t_min, t_min};

@@ -115,11 +115,13 @@ class Bvh {
   // The tree as the rays walk it, four children to a node (as Embree's is): a node of
   // the build's binary tree with, in place of each inner child, that child's own two
   // (the larger first), so that a ray goes down half as many levels. A node holds its
-  // children's boxes side by side, in float rounded outwards (a box can only grow, so
-  // no hit is lost), in two 64-byte lines. A child is an inner node's index, or ~i for
+  // children's boxes side by side: the build's float boxes, rounded outwards (a box can
+  // only grow, so no hit is lost), held as doubles, which the slab test takes without
+  // converting them (the conversions cost more than the memory the floats save), in
+  // four 64-byte lines. A child is an inner node's index, or ~i for
   // leaves_[i]; the unused ones (count < 4) have an empty box, which no ray enters.
   struct alignas(64) PackedNode {
-    float bounds[2][3][4];  // [min or max][axis][child]
+    double bounds[2][3][4];  // [min or max][axis][child]
     int child[4];
     int count;
   };
