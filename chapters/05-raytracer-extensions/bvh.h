@@ -118,8 +118,8 @@ class Bvh {
   // children's boxes side by side: the build's float boxes, rounded outwards (a box can
   // only grow, so no hit is lost), held as doubles, which the slab test takes without
   // converting them (the conversions cost more than the memory the floats save), in
-  // four 64-byte lines. A child is an inner node's index, or ~i for
-  // leaves_[i]; the unused ones (count < 4) have an empty box, which no ray enters.
+  // four 64-byte lines. A child is an inner node's index, or ~i for leaves_[i]; the
+  // unused ones (count < 4) have an empty box, which no ray enters.
   struct alignas(64) PackedNode {
     double bounds[2][3][4];  // [min or max][axis][child]
     int child[4];
