@@ -79,7 +79,7 @@ function(cgfs_add_not_written_yet target)
     COMMENT "Finding the book functions ${target} calls that are not written yet"
     VERBATIM)
   target_sources(${target} PRIVATE "${generated}")
-  target_link_libraries(${target} PRIVATE cgfs::common)
+  target_link_libraries(${target} PRIVATE cgfs::program)
 endfunction()
 
 # Makes TARGET use the headers precompiled once for every chapter of ours.
@@ -88,10 +88,10 @@ function(cgfs_reuse_chapter_headers target)
     set(source "${CMAKE_BINARY_DIR}/chapter-headers.cpp")
     file(WRITE "${source}" "// Compiles the headers precompiled for every chapter.\n")
     add_library(cgfs_chapter_headers OBJECT "${source}")
-    target_link_libraries(cgfs_chapter_headers PRIVATE cgfs::common cgfs_warnings)
+    target_link_libraries(cgfs_chapter_headers PRIVATE cgfs::common cgfs::program cgfs_warnings)
     target_precompile_headers(cgfs_chapter_headers PRIVATE
       <algorithm> <array> <cmath> <functional> <memory> <optional> <string> <utility>
-      <vector> <glm/glm.hpp> <glm/mat4x4.hpp> <cgfs/canvas.h> <cgfs/color.h> <cgfs/figure.h>
+      <vector> <glm/glm.hpp> <glm/mat4x4.hpp> <cgfs/canvas.h> <cgfs/color.h> <program/figure.h>
       <cgfs/math.h>)
   endif()
   target_precompile_headers(${target} REUSE_FROM cgfs_chapter_headers)
@@ -140,7 +140,7 @@ function(cgfs_add_chapter chapter)
     file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/header-check/${chapter}.flags"
       CONTENT "-I$<JOIN:$<TARGET_PROPERTY:${chapter}-lib,INCLUDE_DIRECTORIES>,\n-I>\n")
   endif()
-  target_link_libraries(${chapter}-lib PUBLIC cgfs::common PRIVATE cgfs_warnings)
+  target_link_libraries(${chapter}-lib PUBLIC cgfs::common cgfs::program PRIVATE cgfs_warnings)
   if(NOT CGFS_STUDENT_DIR)
     # Ours: a chapter's files are compiled as one unit ("unity build"), and the
     # standard, GLM and common headers every chapter uses are precompiled once for all

@@ -28,7 +28,7 @@ cgfs_require_package(PNG_FOUND libpng-dev "libpng")
 find_package(JPEG QUIET)
 cgfs_require_package(JPEG_FOUND libjpeg-dev "libjpeg (libjpeg-turbo)")
 
-# --window (common/src/window.cpp): optional, so that a build without a display
+# --window (program/src/window.cpp): optional, so that a build without a display
 # library still builds every chapter; without it --window says how to get it.
 pkg_check_modules(SDL2 QUIET IMPORTED_TARGET sdl2)
 if(NOT SDL2_FOUND)

@@ -18,10 +18,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cgfs/arguments.h"
-#include "cgfs/compare.h"
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
+#include "comparison/compare.h"
+#include "program/arguments.h"
+#include "program/error.h"
+#include "program/image_files.h"
 #include "report.h"
 
 namespace fs = std::filesystem;

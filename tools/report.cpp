@@ -7,9 +7,9 @@
 #include <system_error>
 #include <utility>
 
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
-#include "cgfs/safe_file.h"
+#include "program/error.h"
+#include "program/image_files.h"
+#include "program/safe_file.h"
 
 namespace cgfs {
 

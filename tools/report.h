@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "cgfs/compare.h"
 #include "cgfs/image.h"
+#include "comparison/compare.h"
 
 namespace cgfs {
 

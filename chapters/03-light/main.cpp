@@ -3,7 +3,7 @@
 // chapter: the figures and the one-line description come from scenes.h, and a
 // chapter with command-line options of its own declares them in options.h, with the
 // settings they fill in, which its figures are then made with.
-#include "cgfs/chapter_program.h"
+#include "program/chapter_program.h"
 #include "scenes.h"
 #if __has_include("options.h")
 #include "options.h"

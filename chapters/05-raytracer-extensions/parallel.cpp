@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <vector>
 
-#include "cgfs/error.h"
 #include "cgfs/progress.h"
 
 void ForEachTile(int width, int height, int threads,
@@ -69,7 +69,7 @@ void ForEachTile(int width, int height, int threads,
     thread.join();
   }
   if (!not_started.empty()) {
-    throw cgfs::Error(not_started + "; try fewer with --threads");
+    throw std::runtime_error(not_started + "; try fewer with --threads");
   }
   if (failure) {
     std::rethrow_exception(failure);

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "cgfs/figure.h"
 #include "lines.h"
+#include "program/figure.h"
 
 inline constexpr char kChapterDescription[] =
     "Chapter 6, Lines: DrawLine for any slope, and Interpolate.";

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "cgfs/figure.h"
+#include "program/figure.h"
 #include "triangles.h"
 
 inline constexpr char kChapterDescription[] =

@@ -8,7 +8,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "cgfs/figure.h"
+#include "cgfs/view.h"
 #include "lighting.h"
 #include "matrices.h"
 #include "projection.h"

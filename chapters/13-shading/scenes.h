@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "cgfs/figure.h"
 #include "clipping.h"
+#include "program/figure.h"
 #include "scene_rendering.h"
 
 inline constexpr char kChapterDescription[] =

@@ -3,7 +3,9 @@
 #include <memory>
 #include <string>
 
-#include "cgfs/arguments.h"
+#include "program/arguments.h"
+#include "program/error.h"
+#include "program/image_files.h"
 
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
   auto file = std::make_shared<std::string>();
@@ -17,4 +19,14 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
           std::make_shared<const MipmappedTexture>(BuildMipChain(LoadTexture(*file)));
     }
   });
+}
+
+Texture LoadTexture(const std::filesystem::path& path) {
+  const cgfs::Image image = cgfs::ReadImage(path);
+  if (image.Width() > kMaxTextureSide || image.Height() > kMaxTextureSide) {
+    throw cgfs::Error("'" + path.string() + "' is " + std::to_string(image.Width()) + "x" +
+                      std::to_string(image.Height()) + ", too large for a texture (at most " +
+                      std::to_string(kMaxTextureSide) + " a side)");
+  }
+  return TextureFromImage(image);
 }

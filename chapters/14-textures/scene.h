@@ -9,7 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
-#include "cgfs/figure.h"
+#include "cgfs/view.h"
 #include "lighting.h"
 #include "matrices.h"
 #include "mipmap.h"

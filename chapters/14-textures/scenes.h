@@ -4,9 +4,9 @@
 #include <memory>
 #include <vector>
 
-#include "cgfs/figure.h"
 #include "clipping.h"
 #include "options.h"
+#include "program/figure.h"
 #include "scene_rendering.h"
 #include "texture.h"
 

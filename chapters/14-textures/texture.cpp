@@ -2,12 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include <glm/common.hpp>
-
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
 
 Texture TextureFromImage(const cgfs::Image& image) {
   Texture texture{image.Width(), image.Height(), {}};
@@ -20,16 +16,6 @@ Texture TextureFromImage(const cgfs::Image& image) {
     }
   }
   return texture;
-}
-
-Texture LoadTexture(const std::filesystem::path& path) {
-  const cgfs::Image image = cgfs::ReadImage(path);
-  if (image.Width() > kMaxTextureSide || image.Height() > kMaxTextureSide) {
-    throw cgfs::Error("'" + path.string() + "' is " + std::to_string(image.Width()) + "x" +
-                      std::to_string(image.Height()) + ", too large for a texture (at most " +
-                      std::to_string(kMaxTextureSide) + " a side)");
-  }
-  return TextureFromImage(image);
 }
 
 Texture MakeCrateTexture(int size) {

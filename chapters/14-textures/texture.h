@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <filesystem>
 #include <vector>
 
 #include "cgfs/color.h"
@@ -31,15 +30,6 @@ struct Texture {
 
 // The image's pixels as texels, its top row first.
 Texture TextureFromImage(const cgfs::Image& image);
-
-// The largest texture accepted, a side: 2048 x 2048 texels of 24 bytes are 100 MB,
-// and their mip chain a third more.
-inline constexpr int kMaxTextureSide = 2048;
-
-// A PNG, JPEG or PPM file as a texture (cgfs::ReadImage). Throws cgfs::Error for a
-// file that is not such an image, or one larger than kMaxTextureSide a side (checked
-// before any texel is made).
-Texture LoadTexture(const std::filesystem::path& path);
 
 // The project's stand-in for the book's crate photograph: a wooden crate side of
 // size x size texels, drawn in code (planks, a frame, a diagonal brace, nails).

@@ -3,7 +3,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "cgfs/figure.h"
+#include "cgfs/view.h"
 
 // The card's image is 512 × 512; other sizes see the same view (the pixel step
 // scales with the width).

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "cgfs/arguments.h"
-#include "cgfs/error.h"
+#include "program/arguments.h"
+#include "program/error.h"
 
 namespace {
 

@@ -4,13 +4,13 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "cgfs/error.h"
 #include "parallel.h"
 #include "random.h"
 
@@ -44,7 +44,8 @@ class SobolPoints {
  public:
   SobolPoints(int samples, Random& random) {
     if (samples <= 0) {
-      throw cgfs::Error("samples per pixel must be at least 1, not " + std::to_string(samples));
+      throw std::invalid_argument("samples per pixel must be at least 1, not " +
+                                  std::to_string(samples));
     }
     for (std::uint32_t& bits : scramble_) {
       bits = static_cast<std::uint32_t>(random.Rand() * 65536.0) << 16 |

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "cgfs/figure.h"
 #include "options.h"
+#include "program/figure.h"
 #include "render.h"
 
 inline constexpr char kChapterDescription[] =

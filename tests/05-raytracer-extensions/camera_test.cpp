@@ -6,10 +6,10 @@
 #include <glm/geometric.hpp>
 
 #include "cases.h"
-#include "cgfs/image_io.h"
 #include "checks.h"
 #include "golden.h"
 #include "printing.h"
+#include "program/image_files.h"
 #include "scenes.h"
 
 using cgfs::Rgb8;

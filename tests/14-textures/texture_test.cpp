@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "cases.h"
-#include "cgfs/image_io.h"
 #include "checks.h"
+#include "program/image_files.h"
 #include "scenes.h"
 
 using Catch::Detail::Approx;
@@ -68,11 +68,12 @@ TEST_CASE("u and v are not linear on the canvas, u/z and v/z are", "[texture]") 
 }
 
 TEST_CASE("GetTexelNearest: the cases of 14-textures.json", "[texture]") {
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("14-textures.json", "GetTexelNearest")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("14-textures.json", "GetTexelNearest")) {
     INFO(c.Describe());
-    const Color texel = GetTexelNearest(TextureOfCase(c.args.at("texture")),
-                                        cgfs::test::ToNumber(c.args.at("tx")),
-                                        cgfs::test::ToNumber(c.args.at("ty")));
+    const Color texel =
+        GetTexelNearest(TextureOfCase(c.args.at("texture")), cgfs::test::ToNumber(c.args.at("tx")),
+                        cgfs::test::ToNumber(c.args.at("ty")));
     CHECK_THAT(cgfs::test::AsNumbers(texel), cgfs::test::MatchesCase(c));
   }
 }

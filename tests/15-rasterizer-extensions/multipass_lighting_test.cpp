@@ -1,7 +1,7 @@
 // Chapter 15, "Stencil Shadows", step 1: multi-pass lighting.
 #include <catch2/catch.hpp>
 
-#include "cgfs/compare.h"
+#include "comparison/compare.h"
 #include "multipass_lighting.h"
 #include "scenes.h"
 

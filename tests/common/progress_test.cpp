@@ -1,9 +1,15 @@
-// The progress line of long renders (cgfs/progress.h).
+// How far a figure's drawing has got (cgfs/progress.h): what a renderer reports is what
+// the program that shows it reads, and a new figure starts with nothing reported.
 #include <catch2/catch.hpp>
 
 #include "cgfs/progress.h"
 
-TEST_CASE("ProgressDisplay::Line: percentage and seconds, or seconds alone", "[progress]") {
-  CHECK(cgfs::ProgressDisplay::Line("fig-5-1", 0.375, 2.25) == "rendering fig-5-1   38%  2.2 s");
-  CHECK(cgfs::ProgressDisplay::Line("fig-5-1", -1, 1.5) == "rendering fig-5-1  1.5 s");
+TEST_CASE("ReportProgress: the last fraction reported, -1 after ResetProgress", "[progress]") {
+  cgfs::ResetProgress();
+  CHECK(cgfs::ReportedProgress() == -1);
+  cgfs::ReportProgress(0.25);
+  cgfs::ReportProgress(0.5);
+  CHECK(cgfs::ReportedProgress() == 0.5);
+  cgfs::ResetProgress();
+  CHECK(cgfs::ReportedProgress() == -1);
 }

@@ -7,9 +7,9 @@
 #include <system_error>
 #include <tuple>
 
-#include "cgfs/compare.h"
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
+#include "comparison/compare.h"
+#include "program/error.h"
+#include "program/image_files.h"
 #include "report.h"
 
 namespace cgfs::test {

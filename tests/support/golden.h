@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cgfs/canvas.h"
-#include "cgfs/figure.h"
+#include "program/figure.h"
 
 namespace cgfs::test {
 

@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "cgfs/compare.h"
 #include "cgfs/image.h"
+#include "comparison/compare.h"
 
 namespace Catch {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cgfs/figure.h"
+#include "program/figure.h"
 
 // Defined by each benchmark program: registers its benchmarks.
 void RegisterAll();

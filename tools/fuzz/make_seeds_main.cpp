@@ -2,8 +2,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cgfs/error.h"
-#include "cgfs/safe_file.h"
+#include "program/error.h"
+#include "program/safe_file.h"
 #include "seeds.h"
 
 int main(int argc, char** argv) {

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
+#include "program/error.h"
+#include "program/image_files.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -3,7 +3,7 @@
 #include <stb_image_write.h>
 
 #include "cgfs/image.h"
-#include "cgfs/image_io.h"
+#include "program/image_files.h"
 
 namespace cgfs::fuzz {
 

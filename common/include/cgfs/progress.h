@@ -1,32 +1,14 @@
-// Progress of a long render. A renderer reports how far it is; the chapter program
-// shows it on standard error, only when that is a terminal and the figure has taken
-// more than a second, and erases the line when the figure is done.
+// How far the drawing of a figure has got, for a program that shows it (the chapter
+// program shows a long render's progress on a terminal). A renderer that draws in parts
+// reports the fraction done after each part, from any thread.
 #pragma once
-
-#include <memory>
-#include <string>
 
 namespace cgfs {
 
-// The fraction of the current figure done, 0..1. Any thread may call it.
 void ReportProgress(double fraction);
 
-// Shows the progress of one figure while it exists (see above). Output goes to
-// standard error only if `enabled`; the chapter program enables it when standard
-// error is a terminal.
-class ProgressDisplay {
- public:
-  ProgressDisplay(std::string figure, bool enabled);
-  ~ProgressDisplay();
-  ProgressDisplay(const ProgressDisplay&) = delete;
-  ProgressDisplay& operator=(const ProgressDisplay&) = delete;
-
-  // The line shown after `seconds`, with `fraction` done (negative: unknown).
-  static std::string Line(const std::string& figure, double fraction, double seconds);
-
- private:
-  struct State;
-  std::unique_ptr<State> state_;
-};
+// The fraction last reported since ResetProgress, or -1 when none has been.
+double ReportedProgress();
+void ResetProgress();
 
 }  // namespace cgfs

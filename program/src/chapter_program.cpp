@@ -1,4 +1,4 @@
-#include "cgfs/chapter_program.h"
+#include "program/chapter_program.h"
 
 #include <CLI/CLI.hpp>
 
@@ -12,11 +12,11 @@
 
 #include <unistd.h>
 
-#include "cgfs/arguments.h"
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
-#include "cgfs/progress.h"
-#include "cgfs/window.h"
+#include "program/arguments.h"
+#include "program/error.h"
+#include "program/image_files.h"
+#include "program/progress_display.h"
+#include "program/window.h"
 
 namespace cgfs {
 

@@ -1,4 +1,4 @@
-#include "cgfs/compare.h"
+#include "comparison/compare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <tuple>
 #include <utility>
 
-#include "cgfs/error.h"
+#include "program/error.h"
 
 namespace cgfs {
 

@@ -1,4 +1,4 @@
-// WriteFileSafely and CreateExclusively (cgfs/safe_file.h): what stands at a path is
+// WriteFileSafely and CreateExclusively (program/safe_file.h): what stands at a path is
 // never followed, opened or replaced unless it is a regular file, and a write leaves
 // the whole new file or the old one, and no temporary.
 #include <catch2/catch.hpp>
@@ -12,8 +12,8 @@
 #include <iterator>
 #include <string>
 
-#include "cgfs/error.h"
-#include "cgfs/safe_file.h"
+#include "program/error.h"
+#include "program/safe_file.h"
 
 namespace fs = std::filesystem;
 

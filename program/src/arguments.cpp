@@ -1,4 +1,4 @@
-#include "cgfs/arguments.h"
+#include "program/arguments.h"
 
 #include <CLI/CLI.hpp>
 
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "cgfs/error.h"
+#include "program/error.h"
 
 namespace cgfs {
 

@@ -1,4 +1,4 @@
-#include "cgfs/error.h"
+#include "program/error.h"
 
 #include <CLI/Error.hpp>
 

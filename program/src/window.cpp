@@ -1,4 +1,4 @@
-#include "cgfs/window.h"
+#include "program/window.h"
 
 #include <SDL.h>
 
@@ -12,8 +12,8 @@
 #include <string>
 #include <utility>
 
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
+#include "program/error.h"
+#include "program/image_files.h"
 
 namespace cgfs {
 

@@ -1,7 +1,7 @@
 // ShowFigures in a build without SDL2 (cmake found no libsdl2-dev): one line saying how
 // to get it; every chapter still builds and draws its files.
-#include "cgfs/error.h"
-#include "cgfs/window.h"
+#include "program/error.h"
+#include "program/window.h"
 
 namespace cgfs {
 

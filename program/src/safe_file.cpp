@@ -1,4 +1,4 @@
-#include "cgfs/safe_file.h"
+#include "program/safe_file.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,7 +12,7 @@
 #include <random>
 #include <string>
 
-#include "cgfs/error.h"
+#include "program/error.h"
 
 namespace cgfs {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cgfs/figure.h"
+#include "program/figure.h"
 
 namespace CLI {
 class App;

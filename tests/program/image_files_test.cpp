@@ -12,8 +12,8 @@
 
 #include <stb_image_write.h>
 
-#include "cgfs/error.h"
-#include "cgfs/image_io.h"
+#include "program/error.h"
+#include "program/image_files.h"
 
 namespace fs = std::filesystem;
 using cgfs::Image;

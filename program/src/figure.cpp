@@ -1,9 +1,9 @@
-#include "cgfs/figure.h"
+#include "program/figure.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "cgfs/error.h"
+#include "program/error.h"
 
 namespace cgfs {
 

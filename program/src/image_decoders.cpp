@@ -10,7 +10,7 @@
 #include <cstring>
 #include <vector>
 
-#include "cgfs/error.h"
+#include "program/error.h"
 
 namespace cgfs::detail {
 

@@ -1,8 +1,8 @@
 // The image comparison behind the golden tests and the student tool.
 #include <catch2/catch.hpp>
 
-#include "cgfs/compare.h"
-#include "cgfs/error.h"
+#include "comparison/compare.h"
+#include "program/error.h"
 
 using cgfs::Image;
 using cgfs::Rgb8;

@@ -4,21 +4,10 @@
 #include <functional>
 #include <string>
 
-#include <glm/vec3.hpp>
-
 #include "cgfs/canvas.h"
+#include "cgfs/view.h"
 
 namespace cgfs {
-
-// A figure's camera moved away from where the chapter puts it (--window, --view): first
-// `move` along the camera's own right, up and forward axes, then turned `yaw` degrees
-// to the left and `pitch` degrees up. All zero is the chapter's own view.
-struct View {
-  glm::dvec3 move{0, 0, 0};
-  double yaw = 0;
-  double pitch = 0;
-  friend bool operator==(const View&, const View&) = default;
-};
 
 struct Figure {
   std::string name;     // file name without extension, e.g. "fig-2-11"

@@ -1,4 +1,4 @@
-#include "cgfs/image_io.h"
+#include "program/image_files.h"
 
 #include <stb_image_write.h>
 
@@ -13,9 +13,9 @@
 #include <string>
 #include <system_error>
 
-#include "cgfs/error.h"
-#include "cgfs/safe_file.h"
 #include "image_decoders.h"
+#include "program/error.h"
+#include "program/safe_file.h"
 
 namespace cgfs {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cgfs/figure.h"
+#include "program/figure.h"
 
 namespace cgfs {
 
