@@ -1,256 +1,186 @@
-// Walking the bounding-volume hierarchy (bvh.h): the rays' side of it.
 #include "bvh.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 
 namespace {
 
-// A ray as the packed nodes test it: per axis, 1/D and which bound of a slab the
-// ray meets first (the max when D < 0).
-struct SlabRay {
-  Vec3 O;
-  Vec3 inv_D;
-  int first[3];
-};
+// The surface area heuristic: a ray that enters a box enters a child of it with
+// probability (child's area) / (box's area), so a split costs one box test plus, for
+// each child, that probability times its objects' tests. Of kBins - 1 planes along
+// each axis the cheapest wins; a group of at most kMaxLeaf objects stays a leaf where
+// no plane is cheaper than testing them all.
+constexpr int kBins = 16;
+constexpr int kMaxLeaf = 8;
+constexpr double kBoxTestCost = 1;  // relative to one object test
+// Deeper than this (only objects nested like Russian dolls get there), groups are
+// halved, so that the tree stays under 64 levels, the size of the walk's stack.
+constexpr int kMaxSplitDepth = 40;
 
-SlabRay MakeSlabRay(const Ray& ray) {
-  SlabRay slab{ray.O, 1.0 / ray.D, {}};
-  for (int axis = 0; axis < 3; ++axis) {
-    slab.first[axis] = std::signbit(slab.inv_D[axis]) ? 1 : 0;
-  }
-  return slab;
+Vec3 Centre(const Box& box) {
+  return (box.min + box.max) * 0.5;
 }
 
-// Two doubles, one per child, worked on together (a GCC and Clang vector type: one
-// SSE2 register on x86-64, one NEON register on ARM).
-using Pair = double __attribute__((vector_size(16)));
-
-inline Pair Load(const double* both) {
-  Pair pair;
-  std::memcpy(&pair, both, sizeof pair);
-  return pair;
+double SurfaceArea(const Box& box) {
+  const Vec3 size = box.max - box.min;
+  return 2 * (size.x * size.y + size.y * size.z + size.z * size.x);
 }
 
-// std::max(a, b) and std::min(a, b), lane by lane, with the same answer when b is NaN: a.
-inline Pair Max(Pair a, Pair b) {
-  return a < b ? b : a;
-}
-inline Pair Min(Pair a, Pair b) {
-  return b < a ? b : a;
-}
-
-// RayHitsBox for the four children of a packed node at once, in the same arithmetic
-// with the slab bounds taken in the order the ray meets them instead of sorted after. A
-// ray parallel to a slab (1/D = +-inf) gets -inf or +inf from it, or NaN exactly on its
-// boundary, which Max and Min ignore: the same answers as RayHitsBox's test for D = 0.
-// An unused child's box, from +inf to -inf, is never hit.
-inline void RayHitsChildren(const double (&bounds)[2][3][4], const SlabRay& ray, double t_min,
-                            double t_max, double (&enter)[4], bool (&hits)[4]) {
-  for (int half = 0; half < 2; ++half) {
-    Pair near = {t_min, t_min};
-    Pair far = {t_max, t_max};
-    for (int axis = 0; axis < 3; ++axis) {
-      const int first = ray.first[axis];
-      const Pair O = {ray.O[axis], ray.O[axis]};
-      const Pair inv_D = {ray.inv_D[axis], ray.inv_D[axis]};
-      near = Max(near, (Load(&bounds[first][axis][2 * half]) - O) * inv_D);
-      far = Min(far, (Load(&bounds[1 - first][axis][2 * half]) - O) * inv_D);
-    }
-    for (int c = 0; c < 2; ++c) {
-      enter[2 * half + c] = near[c];
-      hits[2 * half + c] = near[c] <= far[c];
-    }
-  }
+// Which of kBins equal slices of the centres' box, along `axis`, holds `centre`.
+int BinOf(const Vec3& centre, const Box& centres, int axis) {
+  const double extent = centres.max[axis] - centres.min[axis];
+  const int bin = static_cast<int>((centre[axis] - centres.min[axis]) / extent * kBins);
+  return std::min(bin, kBins - 1);
 }
 
 }  // namespace
 
-// Appends node's subtree to packed_ (inner nodes) and leaves_; its child reference.
-// An inner node takes up to four children: its own two, and in place of an inner one
-// its two, the largest first.
-int Bvh::Pack(int node) {
-  if (nodes_[node].count > 0) {
-    leaves_.push_back({nodes_[node].first, nodes_[node].count});
-    return ~static_cast<int>(leaves_.size() - 1);
+Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
+  std::vector<Box> boxes;
+  for (const auto& object : objects) {
+    order_.push_back(static_cast<int>(objects_.size()));
+    objects_.push_back(object.get());
+    boxes.push_back(object->Bounds());
   }
-  const int index = static_cast<int>(packed_.size());
-  packed_.emplace_back();
-  int children[4] = {node + 1, nodes_[node].second_child};
-  int count = 2;
-  while (count < 4) {
-    int widest = -1;
-    for (int c = 0; c < count; ++c) {
-      const Node& child = nodes_[children[c]];
-      if (child.count == 0 &&
-          (widest < 0 || SurfaceArea(child.box) > SurfaceArea(nodes_[children[widest]].box))) {
-        widest = c;
-      }
-    }
-    if (widest < 0) {
-      break;
-    }
-    const int inner = children[widest];
-    children[widest] = inner + 1;
-    children[count++] = nodes_[inner].second_child;
+  if (!objects.empty()) {
+    Build(0, static_cast<int>(objects.size()), boxes, 0);
   }
-  packed_[index].count = count;
-  for (int c = 0; c < 4; ++c) {
-    for (int axis = 0; axis < 3; ++axis) {
-      packed_[index].bounds[0][axis][c] = c < count ? nodes_[children[c]].box.min[axis] : kFloatInf;
-      packed_[index].bounds[1][axis][c] =
-          c < count ? nodes_[children[c]].box.max[axis] : -kFloatInf;
-    }
-    // Pack may move packed_: index, not a reference.
-    const int child = c < count ? Pack(children[c]) : 0;
-    packed_[index].child[c] = child;
-  }
-  return index;
 }
 
-// Walks the nodes whose box the ray enters within [t_min, min(t_max, best)], the
-// nearest child first, so that the farther ones are often skipped, and calls
-// visit(leaf) for each leaf reached; stops when visit returns true. `best` is read at
-// every step: Closest narrows it as it finds hits. The build's tree is under 64
-// levels deep (Build) for any scene that fits in memory, so this one is too, and each
-// level leaves at most three children on the stack.
-template <typename Visit, typename Count>
-void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit,
-               Count& count) const {
-  const SlabRay slab = MakeSlabRay(ray);
-  double t_root = 0;
-  count.Boxes(1);
-  if (!RayHitsBox(root_box_, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
+// Appends the node of the objects order_[first, first + count), then its subtree.
+void Bvh::Build(int first, int count, const std::vector<Box>& boxes, int depth) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  Box box;
+  Box centres;
+  for (int i = first; i < first + count; ++i) {
+    box = Union(box, boxes[order_[i]]);
+    const Vec3 centre = Centre(boxes[order_[i]]);
+    centres = Union(centres, {centre, centre});
+  }
+  nodes_[index].box = box;
+  const int split =
+      count > 2 ? Split(first, count, depth, box, centres, boxes, nodes_[index].axis) : 0;
+  if (split == 0) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
     return;
   }
-  struct Entry {
-    int child;
-    double t_enter;
-  };
-  Entry stack[3 * 64];
-  int size = 0;
-  stack[size++] = {root_, t_root};
-  while (size > 0) {
-    Entry entry = stack[--size];
-    // Down the nearest child, the others left on the stack nearest on top, until a leaf.
-    while (entry.child >= 0 && entry.t_enter <= best) {
-      const PackedNode& node = packed_[entry.child];
-      count.Boxes(node.count);
-      double enter[4];
-      bool hits[4];
-      RayHitsChildren(node.bounds, slab, t_min, std::min(t_max, best), enter, hits);
-      // The children hit, farthest first.
-      Entry order[4];
-      int n = 0;
-      for (int c = 0; c < 4; ++c) {
-        if (hits[c]) {
-          int k = n++;
-          for (; k > 0 && order[k - 1].t_enter < enter[c]; --k) {
-            order[k] = order[k - 1];
-          }
-          order[k] = {node.child[c], enter[c]};
-        }
-      }
-      if (n == 0) {
-        entry.t_enter = cgfs::kInf;  // no child: back to the stack
-        break;
-      }
-      for (int k = 0; k < n - 1; ++k) {
-        stack[size++] = order[k];
-      }
-      entry = order[n - 1];
+  Build(first, split, boxes, depth + 1);
+  nodes_[index].second_child = static_cast<int>(nodes_.size());
+  Build(first + split, count - split, boxes, depth + 1);
+}
+
+// Reorders order_[first, first + count) by the plane the surface area heuristic
+// prefers, sets `split_axis` to its axis, and returns how many go to the first child
+// (0: make a leaf). Objects whose centres all coincide cannot be split by any plane,
+// and the tree must stay under 64 levels: then they are halved as they are.
+int Bvh::Split(int first, int count, int depth, const Box& box, const Box& centres,
+               const std::vector<Box>& boxes, int& split_axis) {
+  if (depth >= kMaxSplitDepth) {
+    return count / 2;
+  }
+  double best_cost = count <= kMaxLeaf ? count : cgfs::kInf;
+  int best_plane = -1;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!(centres.max[axis] > centres.min[axis])) {
+      continue;
     }
-    // A leaf the ray enters before the best hit so far (it may have got nearer since
-    // the leaf was put on the stack).
-    if (entry.child < 0 && entry.t_enter <= best && visit(leaves_[~entry.child])) {
-      return;
+    Box bin_boxes[kBins];
+    int bin_counts[kBins] = {};
+    for (int i = first; i < first + count; ++i) {
+      const int bin = BinOf(Centre(boxes[order_[i]]), centres, axis);
+      bin_boxes[bin] = Union(bin_boxes[bin], boxes[order_[i]]);
+      ++bin_counts[bin];
+    }
+    // The plane before bin p leaves bins [0, p) on its left: the right sides first.
+    Box right;
+    double right_area[kBins] = {};
+    int right_count[kBins + 1] = {};
+    for (int p = kBins - 1; p > 0; --p) {
+      right = Union(right, bin_boxes[p]);
+      right_area[p] = SurfaceArea(right);
+      right_count[p] = right_count[p + 1] + bin_counts[p];
+    }
+    Box left;
+    int left_count = 0;
+    for (int p = 1; p < kBins; ++p) {
+      left = Union(left, bin_boxes[p - 1]);
+      left_count += bin_counts[p - 1];
+      if (left_count == 0 || right_count[p] == 0) {
+        continue;
+      }
+      const double cost =
+          kBoxTestCost +
+          (SurfaceArea(left) * left_count + right_area[p] * right_count[p]) / SurfaceArea(box);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best_plane = p;
+        split_axis = axis;
+      }
     }
   }
+  if (best_plane < 0) {
+    return count <= kMaxLeaf ? 0 : count / 2;
+  }
+  const auto middle = std::partition(
+      order_.begin() + first, order_.begin() + first + count,
+      [&](int i) { return BinOf(Centre(boxes[i]), centres, split_axis) < best_plane; });
+  return static_cast<int>(middle - (order_.begin() + first));
 }
 
-Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
-  NoCount none;
-  return FindClosest(ray, t_min, t_max, object, none);
-}
-
-Bvh::Tests Bvh::CountClosest(const Ray& ray, double t_min, double t_max) const {
-  struct Counter {
-    Tests tests;
-    void Boxes(int n) { tests.boxes += n; }
-    void Object() { ++tests.objects; }
-  } counter;
-  int object = -1;
-  FindClosest(ray, t_min, t_max, object, counter);
-  return counter.tests;
-}
-
-template <typename Count>
-Hit Bvh::FindClosest(const Ray& ray, double t_min, double t_max, int& object, Count& count) const {
+// Walks the nodes whose box the ray enters within [t_min, best hit so far], testing
+// the objects of each leaf reached. Of an inner node's two children the one on the
+// ray's side of the split goes first, since its hits are likely the nearer ones, which
+// then rule out the boxes of the other that lie beyond them; the other waits on the
+// stack. With `any`, stops at the first hit.
+Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& object,
+                Tests& tests) const {
   Hit best;
+  best.t = t_max;  // what the boxes are tested against; narrows with each hit
   object = -1;
-  if (order_.empty()) {
-    return best;
-  }
-  const auto test = [&](int slot) {
-    count.Object();
-    const int candidate = order_[slot];
-    const Hit hit = IntersectSlot(slot, ray, t_min, t_max);
-    // On a tie the lower index wins, as in the plain loop, which keeps the first.
-    if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
-      best = hit;
-      object = candidate;
-    }
-  };
-  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order, without a box test
-    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      count.Object();
-      const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
-      if (hit.t < best.t) {
-        best = hit;
-        object = candidate;
+  const Vec3 inv_D = 1.0 / ray.D;
+  int stack[64];
+  int size = 0;
+  int node = 0;
+  while (!nodes_.empty()) {
+    const Node& current = nodes_[node];
+    double t_enter = 0;
+    ++tests.boxes;
+    if (RayHitsBox(current.box, ray.O, ray.D, inv_D, t_min, best.t, t_enter)) {
+      if (current.count == 0) {
+        const bool second_first = ray.D[current.axis] < 0;
+        stack[size++] = second_first ? node + 1 : current.second_child;
+        node = second_first ? current.second_child : node + 1;
+        continue;
+      }
+      for (int i = current.first; i < current.first + current.count; ++i) {
+        ++tests.objects;
+        const int candidate = order_[i];
+        const Hit hit = objects_[candidate]->Intersect(ray, t_min, best.t);
+        // Within [t_min, best.t]: nearer, or as near and first in the scene (or the first).
+        if (hit.primitive != nullptr && (hit.t < best.t || object < 0 || candidate < object)) {
+          best = hit;
+          object = candidate;
+          if (any) {
+            return best;
+          }
+        }
       }
     }
-    return best;
+    if (size == 0) {
+      break;
+    }
+    node = stack[--size];
   }
-  Walk(
-      ray, t_min, t_max, best.t,
-      [&](const Leaf& leaf) {
-        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-          test(slot);
-        }
-        return false;
-      },
-      count);
-  return best;
+  return object >= 0 ? best : Hit{};
+}
+
+Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object, Tests* tests) const {
+  Tests uncounted;
+  return Search(ray, t_min, t_max, false, object, tests != nullptr ? *tests : uncounted);
 }
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
-  object = -1;
-  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order
-    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
-        object = candidate;
-        return true;
-      }
-    }
-    return false;
-  }
-  if (order_.empty()) {
-    return false;
-  }
-  NoCount none;
-  Walk(
-      ray, t_min, t_max, t_max,
-      [&](const Leaf& leaf) {
-        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-          if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
-            object = order_[slot];
-            return true;
-          }
-        }
-        return false;
-      },
-      none);
-  return object >= 0;
+  Tests uncounted;
+  return Search(ray, t_min, t_max, true, object, uncounted).primitive != nullptr;
 }

@@ -31,6 +31,35 @@ Hit Solid::Intersect(const Ray& ray, double t_min, double t_max) const {
   return {};
 }
 
+namespace {
+
+// The quadratic formula of Listing 2-5: t1 >= t2, or (inf, inf) without real roots.
+std::pair<double, double> QuadraticRoots(double a, double b, double c) {
+  const double discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) {
+    return {cgfs::kInf, cgfs::kInf};
+  }
+  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
+  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
+  return {t1, t2};
+}
+
+// The nearer of the two roots inside [t_min, t_max], tested in the order chapter 4's
+// ClosestIntersection tests them; inf when neither is.
+double NearestRoot(const std::pair<double, double>& roots, double t_min, double t_max) {
+  const auto [t1, t2] = roots;
+  double t = cgfs::kInf;
+  if (t_min <= t1 && t1 <= t_max) {
+    t = t1;
+  }
+  if (t_min <= t2 && t2 <= t_max && t2 < t) {
+    t = t2;
+  }
+  return t;
+}
+
+}  // namespace
+
 // Listing 2-5, "Ray Meets Sphere": put the ray P = O + tD into the sphere equation
 // <P-C, P-C> = r^2 and solve the quadratic for t. D is not normalised, so a = <D,D> is kept.
 std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere) {
@@ -40,6 +69,19 @@ std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const
   const double a = glm::dot(D, D);
   const double b = 2 * glm::dot(CO, D);
   const double c = glm::dot(CO, CO) - r * r;
+  return QuadraticRoots(a, b, c);
+}
+
+// "Caching Invariants": <D,D> comes with the ray, r² and the camera's <CO,CO> with
+// the sphere. Every other step is the one above.
+std::pair<double, double> IntersectRaySphere(const Ray& ray, const Vec3& center,
+                                             const SphereCache& cache) {
+  const Vec3 CO = ray.O - center;
+
+  const double a = ray.D_dot_D;
+  const double b = 2 * glm::dot(CO, ray.D);
+  const double CO_dot_CO = ray.from_camera ? cache.camera_CO_dot_CO : glm::dot(CO, CO);
+  const double c = CO_dot_CO - cache.radius_squared;
   return QuadraticRoots(a, b, c);
 }
 

@@ -4,7 +4,6 @@
 // geometry (csg.h).
 #pragma once
 
-#include <cmath>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -135,48 +134,14 @@ class Sphere final : public Solid {
   bool cached = false;
 };
 
-// The quadratic formula of Listing 2-5: t1 >= t2, or (inf, inf) without real roots.
-inline std::pair<double, double> QuadraticRoots(double a, double b, double c) {
-  const double discriminant = b * b - 4 * a * c;
-  if (discriminant < 0) {
-    return {cgfs::kInf, cgfs::kInf};
-  }
-  const double t1 = (-b + std::sqrt(discriminant)) / (2 * a);
-  const double t2 = (-b - std::sqrt(discriminant)) / (2 * a);
-  return {t1, t2};
-}
-
 // "Ray Meets Sphere": the two solutions t1 >= t2 of the quadratic
 // t^2<D,D> + 2t<CO,D> + <CO,CO> - r^2 = 0, or (inf, inf) when the ray misses.
 std::pair<double, double> IntersectRaySphere(const Vec3& O, const Vec3& D, const Sphere& sphere);
 
 // The same, with the ray's cached <D,D> and the sphere's cached r² (and <CO,CO> for a
 // ray from the camera): the same arithmetic on the same values, so the same roots.
-// Inline: the bounding-volume hierarchy tests its spheres with it.
-inline std::pair<double, double> IntersectRaySphere(const Ray& ray, const Vec3& center,
-                                                    const SphereCache& cache) {
-  const Vec3 CO = ray.O - center;
-
-  const double a = ray.D_dot_D;
-  const double b = 2 * glm::dot(CO, ray.D);
-  const double CO_dot_CO = ray.from_camera ? cache.camera_CO_dot_CO : glm::dot(CO, CO);
-  const double c = CO_dot_CO - cache.radius_squared;
-  return QuadraticRoots(a, b, c);
-}
-
-// The nearer of the two roots inside [t_min, t_max], tested in the order chapter 4's
-// ClosestIntersection tests them; inf when neither is.
-inline double NearestRoot(const std::pair<double, double>& roots, double t_min, double t_max) {
-  const auto [t1, t2] = roots;
-  double t = cgfs::kInf;
-  if (t_min <= t1 && t1 <= t_max) {
-    t = t1;
-  }
-  if (t_min <= t2 && t2 <= t_max && t2 < t) {
-    t = t2;
-  }
-  return t;
-}
+std::pair<double, double> IntersectRaySphere(const Ray& ray, const Vec3& center,
+                                             const SphereCache& cache);
 
 class Triangle final : public Object {
  public:

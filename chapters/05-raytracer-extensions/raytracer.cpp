@@ -66,17 +66,6 @@ bool AnyIntersection(const Vec3& O, const Vec3& D, double t_min, double t_max, c
   return false;
 }
 
-namespace {
-
-// Whether scene object `object` is hit in [t_min, t_max]: through the hierarchy's copy
-// of it when there is one, which lies next to the objects near it in memory.
-bool Hits(int object, const Ray& ray, double t_min, double t_max, const Scene& scene) {
-  return scene.bvh != nullptr ? scene.bvh->Hits(object, ray, t_min, t_max)
-                              : scene.objects[object]->Intersect(ray, t_min, t_max).t < cgfs::kInf;
-}
-
-}  // namespace
-
 // "Shadow Optimizations". Without them this is Listing 4-3's test: is there a
 // closest intersection at all? Each thread remembers its own last blockers, so the
 // threads never share anything they write; a remembered index is only a guess to
@@ -90,7 +79,8 @@ bool IsInShadow(const Vec3& P, const Vec3& L, double t_max, int light_index, con
     }
     const int blocker = last_blocker[light_index];
     if (blocker >= 0 && blocker < static_cast<int>(scene.objects.size()) &&
-        Hits(blocker, MakeRay(P, L, scene), scene.epsilon, t_max, scene)) {
+        scene.objects[blocker]->Intersect(MakeRay(P, L, scene), scene.epsilon, t_max).t <
+            cgfs::kInf) {
       return true;
     }
   }

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "bvh.h"
 #include "meshes.h"
 #include "scenes.h"
 
@@ -372,4 +373,42 @@ TEST_CASE("Bvh finds what the grid finds: a million rays of four kinds per scene
   CheckAgainstGrid("sphere-field-100000", SceneSphereField(100000), 1000000);
   CheckAgainstGrid("torus-mesh", SceneTorusMesh(), 1000000);
   CheckAgainstGrid("csg-nested", SceneCsgNested(), 1000000);
+}
+
+TEST_CASE("RayHitsBox: the slab test and its entry t", "[equations]") {
+  const Box box{{-1, -1, 4}, {1, 1, 6}};
+  const Vec3 O{0, 0, 0};
+  double t = -1;
+  const Vec3 D{0, 0, 1};
+  CHECK(RayHitsBox(box, O, D, 1.0 / D, 0, cgfs::kInf, t));
+  CHECK(t == 4);
+  // Parallel to two pairs of slabs, the ray is inside them or never.
+  const Vec3 beside{2, 0, 1};
+  CHECK_FALSE(RayHitsBox(box, {2, 0, 0}, D, 1.0 / D, 0, cgfs::kInf, t));
+  CHECK(RayHitsBox(box, O, beside, 1.0 / beside, 0, cgfs::kInf, t) == false);
+  // The range of t counts: the box lies at t in [4, 6].
+  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 0, 3.9, t));
+  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 6.1, cgfs::kInf, t));
+  CHECK(RayHitsBox(box, O, D, 1.0 / D, 5, cgfs::kInf, t));
+  CHECK(t == 5);
+}
+
+TEST_CASE("Bvh: a node entered just before the best hit so far is still visited", "[equations]") {
+  // A big sphere, split off from the small ones: the ray down the z axis enters its
+  // box first (z = 15), and the walk takes it first (its side of the split along x, since
+  // the ray runs parallel to that axis), and hits it at z = 16; the small sphere on the
+  // axis, in the other subtree, is hit at z = 15.9995: nearer, though its node is
+  // entered only 0.003 % before 16.
+  std::vector<std::shared_ptr<Object>> objects;
+  objects.push_back(std::make_shared<Sphere>(Vec3{-3, 0, 20}, 5, cgfs::kRed));
+  objects.push_back(std::make_shared<Sphere>(Vec3{0, 0, 16.0095}, 0.01, cgfs::kGreen));
+  for (int i = 0; i < 6; ++i) {  // off the ray's way, behind
+    objects.push_back(std::make_shared<Sphere>(Vec3{0.5 + 0.1 * i, 1, 17}, 0.01, cgfs::kBlue));
+  }
+  const Bvh bvh(objects);
+  REQUIRE(bvh.NodeCount() > 1);
+  int object = -1;
+  const Hit hit = bvh.Closest(Ray{{0, 0, 0}, {0, 0, 1}}, 1, cgfs::kInf, object);
+  CHECK(object == 1);
+  CHECK(hit.t == Approx(15.9995).epsilon(1e-12));
 }

@@ -1,10 +1,9 @@
 // "Supporting Other Primitives" and "Caching Invariants": triangles, the cached
-// sphere intersection, and the boxes of the hierarchy.
+// sphere intersection, and the sphere fields.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "bvh.h"
 #include "meshes.h"
 #include "printing.h"
 #include "raytracer.h"
@@ -63,95 +62,6 @@ TEST_CASE("IntersectRaySphere with cached invariants finds the very same roots",
     REQUIRE(book.first == cached.first);
     REQUIRE(book.second == cached.second);
   }
-}
-
-TEST_CASE("RayHitsBox: the slab test and its entry t", "[equations]") {
-  const Box box{{-1, -1, 4}, {1, 1, 6}};
-  const Vec3 O{0, 0, 0};
-  double t = -1;
-  const Vec3 D{0, 0, 1};
-  CHECK(RayHitsBox(box, O, D, 1.0 / D, 0, cgfs::kInf, t));
-  CHECK(t == 4);
-  // Parallel to two pairs of slabs, the ray is inside them or never.
-  const Vec3 beside{2, 0, 1};
-  CHECK_FALSE(RayHitsBox(box, {2, 0, 0}, D, 1.0 / D, 0, cgfs::kInf, t));
-  CHECK(RayHitsBox(box, O, beside, 1.0 / beside, 0, cgfs::kInf, t) == false);
-  // The range of t counts: the box lies at t in [4, 6].
-  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 0, 3.9, t));
-  CHECK_FALSE(RayHitsBox(box, O, D, 1.0 / D, 6.1, cgfs::kInf, t));
-  CHECK(RayHitsBox(box, O, D, 1.0 / D, 5, cgfs::kInf, t));
-  CHECK(t == 5);
-}
-
-TEST_CASE("Bvh: the surface area heuristic keeps a sphere field's tree cheap", "[equations]") {
-  // The expected cost of a ray through the root, in object tests, over the field's 1000
-  // spheres: halving splits at the median centre into leaves of 4 (the first builder)
-  // cost 62.9, the binned surface area heuristic 55.2. Depth and node count are the
-  // builder's business; the cost is what a ray pays.
-  Scene scene = SceneSphereField(1000);
-  std::vector<std::shared_ptr<Object>> field;  // the ground left out: its box is the world
-  for (const auto& object : scene.objects) {
-    const Box box = object->Bounds();
-    if (box.max.x - box.min.x < 100) {
-      field.push_back(object);
-    }
-  }
-  REQUIRE(field.size() == 1000);
-  const Bvh bvh(field);
-  INFO("cost " << bvh.SurfaceAreaCost() << ", depth " << bvh.Depth());
-  CHECK(bvh.SurfaceAreaCost() < 58);
-  CHECK(bvh.Depth() < 40);
-  CHECK(bvh.NodeCount() < 2 * 1001);
-}
-
-TEST_CASE("Bvh: a node entered just before the best hit so far is still visited", "[equations]") {
-  // A big sphere, larger than all the others together, gets a leaf of its own beside
-  // the tree of the rest. The ray down the z axis enters its box first (z = 15) and
-  // hits it at z = 16; the small sphere on the axis, in the other subtree, is hit at
-  // z = 15.9995: nearer, though its node is entered only 0.003 % before 16.
-  std::vector<std::shared_ptr<Object>> objects;
-  objects.push_back(std::make_shared<Sphere>(Vec3{3, 0, 20}, 5, cgfs::kRed));
-  objects.push_back(std::make_shared<Sphere>(Vec3{0, 0, 16.0095}, 0.01, cgfs::kGreen));
-  for (int i = 0; i < 6; ++i) {  // off the ray's way, behind
-    objects.push_back(std::make_shared<Sphere>(Vec3{0.5 + 0.1 * i, 1, 17}, 0.01, cgfs::kBlue));
-  }
-  const Bvh bvh(objects);
-  REQUIRE(bvh.NodeCount() > 1);
-  int object = -1;
-  const Hit hit = bvh.Closest(Ray{{0, 0, 0}, {0, 0, 1}}, 1, cgfs::kInf, object);
-  CHECK(object == 1);
-  CHECK(hit.t == Approx(15.9995).epsilon(1e-12));
-}
-
-TEST_CASE("Bvh: a primary ray through 10 000 spheres makes a few dozen tests, not thousands",
-          "[equations]") {
-  // The camera's rays through a 60 x 60 grid of the canvas, over the 10 000-sphere
-  // field and its ground: the tests Closest makes per ray, counted. Bounds 6 % above
-  // what the surface-area tree makes (28.9 box tests and 5.82 sphere tests per ray):
-  // halving splits at the median (32.9 box tests, 6.28 sphere tests) or leaves twice
-  // as large (11.9 sphere tests) break them.
-  Scene scene = SceneSphereField(10000);
-  Optimizations bvh;
-  bvh.bvh = true;
-  PrepareScene(scene, bvh);
-  const Canvas canvas(600, 600);
-  Bvh::Tests total;
-  int rays = 0;
-  for (int x = -300; x < 300; x += 10) {
-    for (int y = -300; y < 300; y += 10) {
-      const Vec3 D = CameraRayDirection(x, y, canvas, scene);
-      const Bvh::Tests tests =
-          scene.bvh->CountClosest(MakeRay(scene.camera.position, D, scene), 1, cgfs::kInf);
-      total.boxes += tests.boxes;
-      total.objects += tests.objects;
-      ++rays;
-    }
-  }
-  const double boxes = static_cast<double>(total.boxes) / rays;
-  const double objects = static_cast<double>(total.objects) / rays;
-  INFO("per ray: " << boxes << " box tests, " << objects << " object tests");
-  CHECK(boxes < 30.6);
-  CHECK(objects < 6.2);
 }
 
 TEST_CASE("SphereField places the same spheres on every machine", "[equations]") {

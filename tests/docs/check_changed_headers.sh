@@ -2,7 +2,8 @@
 # Each chapter README's "Changed headers" line (docs/students.md, "Moving on to the
 # next chapter") names exactly the headers that differ from the previous chapter's:
 # changed, new and gone. A chapter that starts afresh ("Headers, for a student: ...")
-# names all of its own as new.
+# names all of its own as new, and a bonus chapter built on an earlier chapter than the
+# folder before it ("for a student's copy of chapter 05") is compared with that one.
 # Usage: check_changed_headers.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
@@ -12,6 +13,14 @@ previous=""
 for folder in chapters/[0-9][0-9]-*/; do
   chapter=$(basename "$folder")
   if [ -z "$previous" ]; then previous=$chapter; continue; fi
+  paragraph=$(awk '/^(Changed headers|Headers, for a student)/ { p = 1 } p && /^$/ { exit } p' \
+    "chapters/$chapter/README.md" | tr '\n' ' ')
+  last=$chapter
+  # A bonus chapter built on an earlier one than the folder before it names its base.
+  if [[ $paragraph =~ copy\ of\ chapter\ ([0-9][0-9]) ]]; then
+    base=(chapters/"${BASH_REMATCH[1]}"-*)
+    previous=$(basename "${base[0]}")
+  fi
   changed="" new="" gone=""
   for header in chapters/"$chapter"/*.h; do
     name=$(basename "$header")
@@ -21,11 +30,9 @@ for folder in chapters/[0-9][0-9]-*/; do
   for header in chapters/"$previous"/*.h; do
     [ -f "chapters/$chapter/$(basename "$header")" ] || gone="$gone $(basename "$header")"
   done
-  paragraph=$(awk '/^(Changed headers|Headers, for a student)/ { p = 1 } p && /^$/ { exit } p' \
-    "chapters/$chapter/README.md" | tr '\n' ' ')
   if [ -z "$paragraph" ]; then
     echo "FAIL: chapters/$chapter/README.md has no \"Changed headers\" paragraph"; failed=1
-    previous=$chapter; continue
+    previous=$last; continue
   fi
   if [[ $paragraph == Headers,* ]]; then  # afresh: every header is new
     want="|$(printf '%s\n' $changed $new | sort | paste -sd' ')|"
@@ -43,6 +50,6 @@ for folder in chapters/[0-9][0-9]-*/; do
   else
     echo "ok: $chapter: $got"
   fi
-  previous=$chapter
+  previous=$last
 done
 exit $failed

@@ -1,0 +1,19 @@
+// "Parallelism": every primary ray is independent of the others and the scene is
+// only read, so the canvas can be drawn by several threads at once. Not a thread
+// per ray (starting one costs far more than tracing a ray): the canvas is cut into
+// tiles, and a pool of workers, one per core, takes the next tile as each comes free.
+#pragma once
+
+#include <functional>
+
+// A rectangle of canvas coordinates: x in [x_begin, x_end), y in [y_begin, y_end).
+struct Tile {
+  int x_begin, x_end, y_begin, y_end;
+};
+
+inline constexpr int kTileSide = 16;
+
+// Calls draw_tile once for every tile of a width x height canvas, from `threads`
+// workers (1: all on this thread, in order). draw_tile must only write its own pixels.
+void ForEachTile(int width, int height, int threads,
+                 const std::function<void(const Tile&)>& draw_tile);
