@@ -35,17 +35,6 @@ std::vector<Plane> ClippingPlanes(double d) {
   };
 }
 
-std::vector<Plane> ClippingPlanes(double d, double spread) {
-  const double n = 1 / std::sqrt(1 + spread * spread);
-  return {
-      {{0, 0, 1}, -d},           // near
-      {{n, 0, spread * n}, 0},   // left
-      {{-n, 0, spread * n}, 0},  // right
-      {{0, n, spread * n}, 0},   // bottom
-      {{0, -n, spread * n}, 0},  // top
-  };
-}
-
 // "Clipping Whole Objects".
 BoundingSphere ComputeBoundingSphere(const std::vector<Vec3>& vertices) {
   BoundingSphere sphere;

@@ -5,7 +5,6 @@
 #include <optional>
 #include <vector>
 
-#include "environment_mapping.h"
 #include "scene.h"
 
 // "The Clipping Volume": the plane of points P with <N, P> + D = 0. N has unit
@@ -30,14 +29,6 @@ Vec3 Intersection(const Vec3& A, const Vec3& B, const Plane& plane);
 // the camera at 45 degrees, a 90-degree field of view.
 std::vector<Plane> ClippingPlanes(double d);
 
-// The clipping volume of a view whose edges are the clipping planes' own, a cube-map
-// face or a shadow map's view (90 degrees, viewport 2d x 2d): the near plane z = d,
-// and side planes opened wider than 45 degrees, through the points with |x| / z or
-// |y| / z = spread. With spread = 1 these are the planes above; a spread a pixel or
-// two beyond 1 keeps the rasteriser, which truncates toward zero, from leaving the
-// edge columns and rows of the view empty.
-std::vector<Plane> ClippingPlanes(double d, double spread);
-
 // "Clipping Whole Objects": a sphere that contains the whole model.
 struct BoundingSphere {
   Vec3 center{0, 0, 0};
@@ -54,7 +45,6 @@ BoundingSphere ComputeBoundingSphere(const std::vector<Vec3>& vertices);
 struct CameraSpaceInstance {
   Model model;
   BoundingSphere bounding_sphere;
-  const CubeMap* environment = nullptr;  // what it reflects, made for this frame
 };
 
 // The scene as the clipping functions see it: every instance in camera space.

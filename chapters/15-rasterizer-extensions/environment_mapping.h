@@ -5,31 +5,10 @@
 
 #include <array>
 
-#include <glm/mat4x4.hpp>
-
 #include "cgfs/math.h"
+#include "map_views.h"
+#include "scene.h"
 #include "texture.h"
-
-using cgfs::Vec3;
-
-// The six faces of a cube map, each a 90-degree view along one axis.
-enum class CubeFace { kPositiveX, kNegativeX, kPositiveY, kNegativeY, kPositiveZ, kNegativeZ };
-
-// The camera orientation (as in chapter 10: columns right, up, forward) of each
-// face's view. Each face is seen without mirroring: right x up = forward.
-glm::dmat4 CubeFaceOrientation(CubeFace face);
-
-// Where direction R meets the cube: the face of its largest component (by absolute
-// value, and its sign), and the point (s, t) on that face, both in [0, 1], s to the
-// right and t down as in a texture: s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2,
-// with ma the largest component and sc, tc the two others as that face's view sees
-// them (the usual cube-map layout).
-struct CubeMapPoint {
-  CubeFace face = CubeFace::kPositiveZ;
-  double s = 0.5;
-  double t = 0.5;
-};
-CubeMapPoint CubeMapLookup(const Vec3& R);
 
 // Six square images of the surroundings, indexed by CubeFace.
 struct CubeMap {
@@ -45,3 +24,13 @@ Vec3 ReflectRay(const Vec3& R, const Vec3& N);
 // face; GetTexel puts texel (i, j) at the point (i, j), so (s, t) is read at
 // (s S, t S - 1).
 Color SampleCubeMap(const CubeMap& cube_map, const Vec3& R);
+
+// "Environment Mapping": the surroundings seen from `centre`, six 90-degree views
+// (viewport 2d x 2d at d = NearPlaneOfMaps), size x size pixels each: the scene's
+// instances that reflect nothing, drawn by RenderView (scene_rendering.h) with the
+// default (Phong) shading and no stage, so reflections show no shadows. The
+// reflective ones are left out: each would otherwise have to be in the others' maps,
+// and its own map is made from inside it. The map is centred on the reflective
+// object, not on the room as the book suggests: with one object, its centre is where
+// the reflection is least wrong.
+CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size);

@@ -1,14 +1,15 @@
 // Chapter 10, "Describing and Rendering a Scene", the rendering part, as chapters 11
 // to 15 leave it: every instance seen from the camera, clipped, its back faces culled
 // if it is closed, and its triangles shaded into a depth-buffered frame; with the
-// optional stages of "Extending the Rasterizer", and beside RenderScene the passes
-// that render the scene again, into cube maps and shadow maps. Where the book reads a
-// global (the canvas, the viewport, the scene), the function takes it as a last
-// parameter.
+// optional stages of "Extending the Rasterizer", whose maps are made first. Where the
+// book reads a global (the canvas, the viewport, the scene), the function takes it as
+// a last parameter.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "clipping.h"
 #include "environment_mapping.h"
 #include "scene.h"
 #include "shading.h"
@@ -48,31 +49,23 @@ struct Extensions {
   ShadowMapping shadow_mapping;  // with kShadowMaps
 };
 
-// "The Clipping Pipeline", "Back Face Culling", "Depth Buffering" and "Shading": every
-// instance, seen from the scene's camera, clipped against the clipping volume; the
-// back faces of closed models culled; the rest shaded as `shading` says, lit by the
-// scene's lights, which are brought into camera space like the vertices; with the
-// stages `extensions` turns on.
+// The maps the stages read, made before the scene is drawn: what each instance reflects
+// ("Environment Mapping": a reflective instance's cube map, indexed like the instances)
+// and ("Shadow Mapping") one shadow map per light.
+struct Maps {
+  std::vector<std::optional<CubeMap>> environments;
+  std::vector<ShadowMap> shadow_maps;
+};
+
+// One view of the scene, its maps made: every instance seen from the scene's camera,
+// clipped against `planes`, the back faces of closed models culled, the rest shaded as
+// `shading` says, lit by the scene's lights, which are brought into camera space like
+// the vertices; in one pass, or ("Stencil Shadows") in one pass per light.
+void RenderView(const Scene& scene, const Maps& maps, const std::vector<Plane>& planes,
+                Canvas& canvas, const Shading& shading, const Extensions& extensions);
+
+// "The Clipping Pipeline", "Back Face Culling", "Depth Buffering" and "Shading", with
+// the stages `extensions` turns on: the maps they read (RenderCubeMap, RenderShadowMap),
+// then the view from the camera through the clipping volume (RenderView).
 void RenderScene(const Scene& scene, Canvas& canvas, const Shading& shading = {},
                  const Extensions& extensions = {});
-
-// The near plane of the views rendered for the maps: a thousandth of the radius of a
-// sphere around every instance, so that nothing of the scene is cut away however
-// close to a view's centre it is.
-double NearPlaneOfMaps(const Scene& scene);
-
-// "Environment Mapping": the surroundings seen from `centre`, six 90-degree views
-// (viewport 2d x 2d at d = NearPlaneOfMaps), size x size pixels each: the scene's
-// instances that reflect nothing, lit by its lights with the default (Phong) shading
-// and no other stage, so reflections show no shadows. The reflective ones are left
-// out: each would otherwise have to be in the others' maps, and its own map is made
-// from inside it. The map is centred on the reflective object, not on the room as the
-// book suggests: with one object, its centre is where the reflection is least wrong.
-CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size);
-
-// "Shadow Mapping": the scene's depths as `light` (in world space) sees them,
-// settings.size x settings.size per view: six perspective views from a point light, one
-// orthographic view along a directional light, covering a sphere around every
-// instance's vertices and seen from beyond it; none for ambient light. No back faces
-// are culled: a surface that faces away from the light casts a shadow too.
-ShadowMap RenderShadowMap(const Scene& scene, const Light& light, const ShadowMapping& settings);

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "depth_buffer.h"
+#include "projection.h"
+
 bool InShadow(double stored_depth, double depth, double bias) {
   return stored_depth < depth - bias;
 }
@@ -106,4 +109,99 @@ double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N
   };
   return PercentageCloserFilter({shadowed(0, 0), shadowed(1, 0), shadowed(0, 1), shadowed(1, 1)},
                                 point->tx - i, point->ty - j);
+}
+
+namespace {
+
+// The depths a DepthBuffer holds, row by row from the top.
+std::vector<double> DepthsOf(const DepthBuffer& depth_buffer, int size) {
+  std::vector<double> depths;
+  depths.reserve(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
+  for (int y = size / 2 - 1; y >= -size / 2; --y) {
+    for (int x = -size / 2; x < size / 2; ++x) {
+      depths.push_back(depth_buffer.At(x, y));
+    }
+  }
+  return depths;
+}
+
+// The orientation (columns right, up, forward) of a view looking along `forward`.
+glm::dmat4 LookAlong(const Vec3& forward) {
+  const Vec3 f = glm::normalize(forward);
+  const Vec3 helper = std::abs(f.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+  const Vec3 right = glm::normalize(glm::cross(helper, f));
+  const Vec3 up = glm::cross(f, right);
+  return glm::dmat4(glm::dvec4(right, 0), glm::dvec4(up, 0), glm::dvec4(f, 0),
+                    glm::dvec4(0, 0, 0, 1));
+}
+
+// A point light's view: every instance in the view's space, clipped like a cube map's
+// face, drawn with the depth-buffered DrawFilledTriangle (the colours are not kept).
+DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& world_to_view, int size) {
+  Canvas canvas(size, size);
+  const double d = NearPlaneOfMaps(scene);
+  const Viewport viewport{2 * d, 2 * d, d};
+  DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
+  CameraSpaceScene view_scene;
+  for (const Instance& I : scene.instances) {
+    view_scene.instances.push_back(
+        TransformToCameraSpace(I, world_to_view * MakeTransformMatrix(I.transform)));
+  }
+  for (const CameraSpaceInstance& I :
+       ClipScene(view_scene, CubeFaceClippingPlanes(d, size)).instances) {
+    const auto& V = I.model.vertices;
+    for (const Triangle& T : I.model.triangles) {
+      DrawFilledTriangle(ProjectVertex(V[T.v[0]], canvas, viewport),
+                         ProjectVertex(V[T.v[1]], canvas, viewport),
+                         ProjectVertex(V[T.v[2]], canvas, viewport), V[T.v[0]].z, V[T.v[1]].z,
+                         V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
+    }
+  }
+  return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
+}
+
+// A directional light's view: orthographic, so a point (x, y, z) of the view's
+// space lands at (x, y) scaled to the canvas, whatever its z; z is linear across the
+// canvas then, and the depth buffer stores z itself. The view stands beyond the
+// scene, so nothing needs clipping.
+DepthMap OrthographicView(const Scene& scene, const Vec3& direction, int size) {
+  const BoundingSphere bounds = SceneBounds(scene);
+  const Vec3 forward = -glm::normalize(direction);
+  const glm::dmat4 world_to_view =
+      MakeCameraMatrix(bounds.center - forward * (bounds.radius + 1), LookAlong(forward));
+  Canvas canvas(size, size);
+  const Viewport viewport{2 * bounds.radius, 2 * bounds.radius, 1};
+  DepthBuffer depth_buffer(canvas, DepthValue::kZ);
+  for (const Instance& I : scene.instances) {
+    const glm::dmat4 M = world_to_view * MakeTransformMatrix(I.transform);
+    std::vector<Vec3> V;
+    std::vector<Point> projected;
+    for (const Vec3& vertex : I.model->vertices) {
+      V.push_back(cgfs::ToCartesian(M * glm::dvec4(vertex, 1.0)));
+      projected.push_back(ViewportToCanvas(V.back().x, V.back().y, canvas, viewport));
+    }
+    for (const Triangle& T : I.model->triangles) {
+      DrawFilledTriangle(projected[T.v[0]], projected[T.v[1]], projected[T.v[2]], V[T.v[0]].z,
+                         V[T.v[1]].z, V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
+    }
+  }
+  return {size, DepthsOf(depth_buffer, size), world_to_view, true, bounds.radius};
+}
+
+}  // namespace
+
+ShadowMap RenderShadowMap(const Scene& scene, const Light& light, const ShadowMapping& settings) {
+  ShadowMap shadow_map;
+  shadow_map.light = light;
+  shadow_map.settings = settings;
+  if (light.type == LightType::kPoint) {
+    for (int f = 0; f < 6; ++f) {
+      const glm::dmat4 orientation = CubeFaceOrientation(static_cast<CubeFace>(f));
+      shadow_map.views.push_back(
+          PerspectiveView(scene, MakeCameraMatrix(light.position, orientation), settings.size));
+    }
+  } else if (light.type == LightType::kDirectional) {
+    shadow_map.views.push_back(OrthographicView(scene, light.direction, settings.size));
+  }
+  return shadow_map;
 }

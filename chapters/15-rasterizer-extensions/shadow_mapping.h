@@ -1,7 +1,6 @@
 // Chapter 15, "Shadow Mapping" (prose only in the book): what each light sees,
 // rendered beforehand as depths, so that shading a point can ask whether something
-// is closer to the light than it is. The views themselves are rendered beside
-// RenderScene (scene_rendering.h).
+// is closer to the light than it is: the maps made, and read.
 #pragma once
 
 #include <array>
@@ -9,8 +8,8 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "environment_mapping.h"
 #include "lighting.h"
+#include "map_views.h"
 
 // How the shading reads a shadow map.
 struct ShadowMapping {
@@ -75,3 +74,10 @@ double PercentageCloserFilter(const std::array<bool, 4>& in_shadow, double fx, d
 // surface whose unit normal there is N, in [0, 1]: 0 or 1, or in between with
 // filtering. Points outside every view are lit.
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N);
+
+// "Shadow Mapping": the scene's depths as `light` (in world space) sees them,
+// settings.size x settings.size per view: six perspective views from a point light, one
+// orthographic view along a directional light, covering a sphere around every
+// instance's vertices and seen from beyond it; none for ambient light. No back faces
+// are culled: a surface that faces away from the light casts a shadow too.
+ShadowMap RenderShadowMap(const Scene& scene, const Light& light, const ShadowMapping& settings);
