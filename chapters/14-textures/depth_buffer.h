@@ -2,6 +2,7 @@
 // of the canvas, and filled triangles that only cover what is farther away.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "canvas_grid.h"
@@ -42,8 +43,15 @@ class DepthBuffer {
   CanvasGrid<double> depths_;
 };
 
+// "Depth Buffering": an attribute of a triangle's vertices interpolated along its
+// edges, as x is in Listing 7-1 and h in Listing 8-1. y0 <= y1 <= y2; returns the
+// values on the long side P0-P2 and on the two short sides P0-P1-P2 joined (the
+// value at y1 once), one per row from y0 to y2.
+std::pair<std::vector<double>, std::vector<double>> EdgeInterpolate(int y0, double v0, int y1,
+                                                                    double v1, int y2, double v2);
+
 // Listing 7-1 with a depth test before every PutPixel. z0, z1, z2 are the camera-space
 // depths of the points that P0, P1, P2 are projections of; the buffer's DepthOf
-// value is carried across the triangle by WalkTriangle, like h in Listing 8-1.
+// value is interpolated along the edges and across each row, like h in Listing 8-1.
 void DrawFilledTriangle(Point P0, Point P1, Point P2, double z0, double z1, double z2,
                         const Color& color, Canvas& canvas, DepthBuffer& depth_buffer);
