@@ -11,6 +11,9 @@ namespace {
 // no plane is cheaper than testing them all.
 constexpr int kBins = 16;
 constexpr int kMaxLeaf = 8;
+// So few objects are a leaf whatever the heuristic says: a scene of a few objects is
+// then one leaf, which Search tests as the plain loop does, with no box.
+constexpr int kSmallLeaf = 4;
 constexpr double kBoxTestCost = 1;  // relative to one object test
 // Deeper than this (only objects nested like Russian dolls get there), groups are
 // halved, so that the tree stays under 64 levels, the size of the walk's stack.
@@ -59,7 +62,7 @@ void Bvh::Build(int first, int count, const std::vector<Box>& boxes, int depth) 
   }
   nodes_[index].box = box;
   const int split =
-      count > 2 ? Split(first, count, depth, box, centres, boxes, nodes_[index].axis) : 0;
+      count > kSmallLeaf ? Split(first, count, depth, box, centres, boxes, nodes_[index].axis) : 0;
   if (split == 0) {
     nodes_[index].first = first;
     nodes_[index].count = count;
@@ -138,6 +141,27 @@ Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& objec
   Hit best;
   best.t = t_max;  // what the boxes are tested against; narrows with each hit
   object = -1;
+  // Tests a leaf's objects; true to stop (with `any`, at the first hit).
+  const auto test_leaf = [&](const Node& leaf) {
+    for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
+      ++tests.objects;
+      const int candidate = order_[i];
+      const Hit hit = objects_[candidate]->Intersect(ray, t_min, best.t);
+      // Within [t_min, best.t]: nearer, or as near and first in the scene (or the first).
+      if (hit.primitive != nullptr && (hit.t < best.t || object < 0 || candidate < object)) {
+        best = hit;
+        object = candidate;
+        if (any) {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+  if (nodes_.size() == 1) {  // one leaf: the plain loop, with no box to test
+    test_leaf(nodes_[0]);
+    return object >= 0 ? best : Hit{};
+  }
   const Vec3 inv_D = 1.0 / ray.D;
   int stack[64];
   int size = 0;
@@ -153,18 +177,8 @@ Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& objec
         node = second_first ? current.second_child : node + 1;
         continue;
       }
-      for (int i = current.first; i < current.first + current.count; ++i) {
-        ++tests.objects;
-        const int candidate = order_[i];
-        const Hit hit = objects_[candidate]->Intersect(ray, t_min, best.t);
-        // Within [t_min, best.t]: nearer, or as near and first in the scene (or the first).
-        if (hit.primitive != nullptr && (hit.t < best.t || object < 0 || candidate < object)) {
-          best = hit;
-          object = candidate;
-          if (any) {
-            return best;
-          }
-        }
+      if (test_leaf(current)) {
+        break;
       }
     }
     if (size == 0) {
