@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "bvh.h"
+#include "hierarchy_counts.h"
 #include "scenes.h"
 
 TEST_CASE("Bvh: a primary ray through 10 000 spheres makes a few dozen tests, not thousands",
@@ -11,24 +12,8 @@ TEST_CASE("Bvh: a primary ray through 10 000 spheres makes a few dozen tests, no
   // visited). Bounds 6 % above what the surface-area tree makes (30.9 box tests and 5.84
   // sphere tests per ray): halving splits at the median centre (42.2 box tests, 7.65
   // sphere tests) break both.
-  Scene scene = SceneSphereField(10000);
-  Optimizations bvh;
-  bvh.bvh = true;
-  PrepareScene(scene, bvh);
-  const Canvas canvas(600, 600);
-  Bvh::Tests total;
-  int rays = 0;
-  for (int x = -300; x < 300; x += 10) {
-    for (int y = -300; y < 300; y += 10) {
-      const Vec3 D = CameraRayDirection(x, y, canvas, scene);
-      int object = -1;
-      scene.bvh->Closest(MakeRay(scene.camera.position, D, scene), 1, cgfs::kInf, object, &total);
-      ++rays;
-    }
-  }
-  const double boxes = static_cast<double>(total.boxes) / rays;
-  const double objects = static_cast<double>(total.objects) / rays;
-  INFO("per ray: " << boxes << " box tests, " << objects << " object tests");
-  CHECK(boxes < 32.8);
-  CHECK(objects < 6.2);
+  const cgfs::test::TestsPerRay per_ray = cgfs::test::TestsPerPrimaryRay(SceneSphereField(10000));
+  INFO("per ray: " << per_ray.boxes << " box tests, " << per_ray.objects << " object tests");
+  CHECK(per_ray.boxes < 32.8);
+  CHECK(per_ray.objects < 6.2);
 }

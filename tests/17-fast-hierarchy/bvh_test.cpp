@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bvh.h"
+#include "hierarchy_counts.h"
 #include "scenes.h"
 
 TEST_CASE("Bvh: the surface area heuristic keeps a sphere field's tree cheap", "[equations]") {
@@ -36,24 +37,8 @@ TEST_CASE("Bvh: a primary ray through 10 000 spheres makes a few dozen tests, no
   // what the surface-area tree makes (28.9 box tests and 5.82 sphere tests per ray):
   // halving splits at the median (32.9 box tests, 6.28 sphere tests) or leaves twice
   // as large (11.9 sphere tests) break them.
-  Scene scene = SceneSphereField(10000);
-  Optimizations bvh;
-  bvh.bvh = true;
-  PrepareScene(scene, bvh);
-  const Canvas canvas(600, 600);
-  Bvh::Tests total;
-  int rays = 0;
-  for (int x = -300; x < 300; x += 10) {
-    for (int y = -300; y < 300; y += 10) {
-      const Vec3 D = CameraRayDirection(x, y, canvas, scene);
-      int object = -1;
-      scene.bvh->Closest(MakeRay(scene.camera.position, D, scene), 1, cgfs::kInf, object, &total);
-      ++rays;
-    }
-  }
-  const double boxes = static_cast<double>(total.boxes) / rays;
-  const double objects = static_cast<double>(total.objects) / rays;
-  INFO("per ray: " << boxes << " box tests, " << objects << " object tests");
-  CHECK(boxes < 30.6);
-  CHECK(objects < 6.2);
+  const cgfs::test::TestsPerRay per_ray = cgfs::test::TestsPerPrimaryRay(SceneSphereField(10000));
+  INFO("per ray: " << per_ray.boxes << " box tests, " << per_ray.objects << " object tests");
+  CHECK(per_ray.boxes < 30.6);
+  CHECK(per_ray.objects < 6.2);
 }
