@@ -37,8 +37,8 @@ class Random {
   double preset_[2] = {0, 0};
   int presets_ = 0;
   // A generator is made for every pixel, so it must be quick to make: this one of
-  // the standard library has 24 numbers of state (std::mt19937 has 624; with it the
-  // card took 7 times as long at one sample per pixel, see README.md).
+  // the standard library has 24 numbers of state (std::mt19937 has 624, and makes a
+  // card of a few samples a pixel several times as slow: README.md).
   std::ranlux24_base engine_;
   std::uniform_real_distribution<float> uniform_{0.0F, 1.0F};
 };
