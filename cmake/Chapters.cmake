@@ -181,6 +181,9 @@ function(cgfs_add_render_target)
   # program is linked, while the others still compile; `render` is all of them, and
   # cgfs-compare, which the same clean build then makes alongside.
   add_custom_target(render)
+  # `chapters`: every chapter program, nothing else (scripts/deep-checks, debug build).
+  add_custom_target(chapters)
+  add_dependencies(chapters ${programs})
   if(NOT CGFS_STUDENT_DIR)
     add_dependencies(render cgfs-compare)  # students use ours (tools/CMakeLists.txt)
   endif()

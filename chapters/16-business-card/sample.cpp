@@ -13,9 +13,10 @@ CardColor SkyColor(const glm::dvec3& d) {
 CardColor FloorTile(const glm::dvec3& h) {
   const glm::dvec3 scaled = h * 0.2;
   // The card's (int)(ceil(x) + ceil(y)) & 1: the parity of the sum, negative sums
-  // included (−3 & 1 is 1 in two's complement, so −3 is odd, as it should be).
-  const int sum = static_cast<int>(std::ceil(scaled.x) + std::ceil(scaled.y));
-  return (sum & 1) != 0 ? CardColor(3, 1, 1) : CardColor(3, 3, 3);
+  // included (−3 is odd). Taken on the double itself, without the card's conversion to
+  // int, which is undefined for a point as far away as a moved view can reach.
+  const double sum = std::ceil(scaled.x) + std::ceil(scaled.y);
+  return std::fmod(sum, 2) != 0 ? CardColor(3, 1, 1) : CardColor(3, 3, 3);
 }
 
 CardColor Sample(const glm::dvec3& o, const glm::dvec3& d, Random& random, bool bounded,

@@ -19,6 +19,9 @@ TEST_CASE("FloorTile: 5 x 5 tiles, white where ceil(x/5) + ceil(y/5) is even", "
   CheckNear(FloorTile({-1, -1, 0}), {3, 3, 3});  // 0 + 0
   CheckNear(FloorTile({-6, 1, 0}), {3, 3, 3});   // -1 + 1
   CheckNear(FloorTile({-6, -1, 0}), {3, 1, 1});  // -1 + 0: odd, though negative
+  // Far beyond any int: 4e11 + 4e11 is even, and 4e11 + 1 odd.
+  CheckNear(FloorTile({2e12, 2e12, 0}), {3, 3, 3});
+  CheckNear(FloorTile({2e12, 5, 0}), {3, 1, 1});
 }
 
 TEST_CASE("Sample: a ray into the sky is the sky's colour, whatever the generator", "[sample]") {

@@ -119,6 +119,13 @@ if [ -n "$chapter16" ]; then
     echo "FAIL: chapter 16: not 512x512 without --size: $(cat "$work/ch16-size.txt")"
     failures=$((failures + 1))
   fi
+  # Views as far as --view allows: the floor far away (its tiles' parity once went
+  # through an int), in every direction (the sanitizer build checks float-to-int casts).
+  expect 0 "chapter 16: a view a million units away" "$chapter16" --output "$work/ch16-far" \
+    --size 8x8 --figure business-card-1-sample --view 1e6,1e6,1e6,0,0
+  expect 0 "chapter 16: a view a million units the other way, looking down" "$chapter16" \
+    --output "$work/ch16-far" --size 8x8 --figure business-card-1-sample \
+    --view -1e6,-1e6,1e6,45,-60
   expect 2 "chapter 16: zero samples" "$chapter16" --samples 0 --output "$work/bad"
   expect 2 "chapter 16: too many samples" "$chapter16" --samples 5000 --output "$work/bad"
   expect 2 "chapter 16: samples not a number" "$chapter16" --samples lots --output "$work/bad"
