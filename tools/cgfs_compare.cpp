@@ -9,6 +9,8 @@
 // Prints the numbers, writes a difference image, and exits 0 when the images
 // match under the tolerance of the reference tests, 1 when they do not, and 2
 // on bad input.
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -76,6 +78,49 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   return file;
 }
 
+// Whether `path` names something inside `folder`, however either is spelled (links,
+// "..", relative or not).
+bool Inside(const fs::path& path, const fs::path& folder) {
+  std::error_code error;
+  const fs::path where = fs::weakly_canonical(path, error);
+  const fs::path within = fs::weakly_canonical(folder, error);
+  if (error || within.empty()) {
+    return false;
+  }
+  const auto [stop, rest] = std::mismatch(within.begin(), within.end(), where.begin(), where.end());
+  return stop == within.end() && rest != where.end();
+}
+
+// Whether the name is one an image file of a report's folder may have.
+bool ImageName(const fs::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return extension == ".png" || extension == ".ppm" || extension == ".jpg" || extension == ".jpeg";
+}
+
+// A file this run writes must not be one it reads: an image compared, a golden image,
+// an image of the folder being reported on. Refused before anything is written.
+void RefuseToOverwriteAnInput(const fs::path& destination, const std::string& option,
+                              const std::vector<fs::path>& inputs, const fs::path& golden,
+                              const fs::path& folder = {}) {
+  if (Inside(destination, golden)) {
+    throw cgfs::UsageError(option + " " + cgfs::Quoted(destination) +
+                           " is in the folder of the golden images; nothing was written");
+  }
+  std::error_code error;
+  bool input = !folder.empty() && Inside(destination, folder) && ImageName(destination) &&
+               SomethingAt(destination);
+  for (const fs::path& file : inputs) {
+    input = input || fs::equivalent(destination, file, error);
+  }
+  if (input) {
+    throw cgfs::UsageError(option + " " + cgfs::Quoted(destination) +
+                           " is one of the images this run reads; nothing was written");
+  }
+}
+
 // --report: one page for a whole folder; exit 0 when every figure there passes.
 // Whether the file starts as a JPEG does (FF D8 FF), whatever its name says.
 bool IsJpeg(const fs::path& path) {
@@ -95,6 +140,11 @@ int Report(const fs::path& folder, fs::path html, const fs::path& golden) {
                       " has no chapter folder (such as 02-basic-rays/) of ours" +
                       (unmatched.empty() ? "" : "; " + unmatched.front()));
   }
+  std::vector<fs::path> inputs;
+  for (const cgfs::ReportEntry& entry : entries) {
+    inputs.push_back(entry.actual_file);
+  }
+  RefuseToOverwriteAnInput(html, "--html", inputs, golden, folder);
   cgfs::WriteReport(entries, html, "Your figures against ours: " + folder.string());
   int failed = 0;
   for (const cgfs::ReportEntry& entry : entries) {
@@ -178,11 +228,7 @@ int main(int argc, char** argv) {
     if (difference_path.empty()) {
       difference_path = (actual_file.parent_path() / actual_file.stem()).string() + ".diff.png";
     }
-    std::error_code error;
-    if (fs::equivalent(difference_path, actual_file, error) ||
-        fs::equivalent(difference_path, expected_file, error)) {
-      throw cgfs::UsageError("--diff would overwrite one of the images being compared");
-    }
+    RefuseToOverwriteAnInput(difference_path, "--diff", {actual_file, expected_file}, golden);
 
     const cgfs::Image expected = cgfs::ReadImage(expected_file);
     const cgfs::Image actual = cgfs::ReadImage(actual_file);

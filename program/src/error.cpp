@@ -17,6 +17,29 @@ std::string Quoted(const std::filesystem::path& path) {
   return quoted;
 }
 
+// Control characters written as escapes, \n, \t, \x1b, so that a message that echoes a
+// value given with a newline in it, or a file name with a tab, stays one line.
+std::string OneLine(std::string_view message) {
+  std::string line;
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\r') {
+      line += "\\r";
+    } else if (c == '\t') {
+      line += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escape[5];
+      std::snprintf(escape, sizeof escape, "\\x%02x", byte);
+      line += escape;
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+
 namespace {
 
 // Everything a program printed must have reached its destination: `--list > /dev/full`
@@ -29,7 +52,7 @@ void FlushStandardOutput() {
 }
 
 int Report(std::string_view program, const std::string& message, bool usage) {
-  std::cerr << program << ": error: " << message << (usage ? " (try --help)" : "") << "\n";
+  std::cerr << program << ": error: " << OneLine(message) << (usage ? " (try --help)" : "") << "\n";
   return 2;
 }
 

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -38,11 +39,15 @@ extern "C" void RemovePendingTemporaryAndStop(int signal_number) {
   std::raise(signal_number);
 }
 
-// SIGINT and SIGTERM remove the pending temporary, then stop the program as they
-// would have; installed once, and only where the program has no handler of its own.
+// The signals that stop a program while it writes: interrupted (Ctrl-C), terminated, or
+// its terminal closed.
+constexpr int kStoppingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// Those signals remove the pending temporary, then stop the program as they would have;
+// installed once, and only where the program has no handler of its own.
 void InstallSignalHandlersOnce() {
   static const bool installed = [] {
-    for (const int signal_number : {SIGINT, SIGTERM}) {
+    for (const int signal_number : kStoppingSignals) {
       struct sigaction current {};
       if (sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler == SIG_DFL) {
         struct sigaction action {};
@@ -56,17 +61,22 @@ void InstallSignalHandlersOnce() {
   (void)installed;
 }
 
-// While it lives, the temporary is the one the signal handler removes.
+// The temporary the signal handler removes while this lives. Made with the signals held
+// back, so that no signal can come between the file's creation and its registration.
 class PendingTemporary {
  public:
+  // Creates `path` exclusively (CreateExclusively); fd() is -1 with errno set if it could
+  // not be created.
   explicit PendingTemporary(const fs::path& path) {
+    Blocked blocked;
+    fd_ = CreateExclusively(path);
     const std::string text = path.string();
-    if (text.size() < kMaxPendingPath) {
-      Blocked blocked;
+    if (fd_ >= 0 && text.size() < kMaxPendingPath) {
       std::memcpy(pending_path, text.c_str(), text.size() + 1);
       has_pending = 1;
     }
   }
+  int fd() const { return fd_; }
   ~PendingTemporary() {
     Blocked blocked;
     has_pending = 0;
@@ -75,18 +85,20 @@ class PendingTemporary {
   PendingTemporary& operator=(const PendingTemporary&) = delete;
 
  private:
-  // SIGINT and SIGTERM held back while the buffer changes.
+  // The stopping signals held back while the file and the buffer change.
   struct Blocked {
     Blocked() {
       sigset_t signals;
       sigemptyset(&signals);
-      sigaddset(&signals, SIGINT);
-      sigaddset(&signals, SIGTERM);
+      for (const int signal_number : kStoppingSignals) {
+        sigaddset(&signals, signal_number);
+      }
       pthread_sigmask(SIG_BLOCK, &signals, &saved);
     }
     ~Blocked() { pthread_sigmask(SIG_SETMASK, &saved, nullptr); }
     sigset_t saved;
   };
+  int fd_ = -1;
 };
 
 // Throws unless `path` is free or a regular file (not followed if a symbolic link).
@@ -110,7 +122,9 @@ void RefuseAnythingButARegularFile(const fs::path& path) {
               ", not a regular file; nothing was written");
 }
 
-// A name for a temporary beside `path` that no other program is likely to pick.
+// A name for a temporary beside `path` that no other program is likely to pick:
+// `.<name>.<16 hex digits>.partial`, the name cut to 200 bytes so that the whole fits
+// the 255 bytes a file name may have.
 fs::path TemporaryName(const fs::path& path) {
   static std::mt19937_64 random = [] {
     std::random_device device;
@@ -120,7 +134,7 @@ fs::path TemporaryName(const fs::path& path) {
   char suffix[17];
   std::snprintf(suffix, sizeof suffix, "%016llx", static_cast<unsigned long long>(random()));
   std::string file(1, '.');  // appended, not "." + string: GCC 12's -Wrestrict (bug 105329)
-  file += path.filename().string();
+  file += path.filename().string().substr(0, 200);
   file += '.';
   file += suffix;
   file += ".partial";
@@ -167,19 +181,18 @@ void WriteFileSafely(const fs::path& path, std::string_view bytes) {
   RefuseAnythingButARegularFile(path);
   InstallSignalHandlersOnce();
   fs::path temporary;
-  int fd = -1;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+  std::optional<PendingTemporary> pending;
+  for (int attempt = 0; attempt < 100 && (!pending || pending->fd() < 0); ++attempt) {
     temporary = TemporaryName(path);
-    fd = CreateExclusively(temporary);
-    if (fd < 0 && errno != EEXIST) {
+    pending.emplace(temporary);
+    if (pending->fd() < 0 && errno != EEXIST) {
       Fail(path, errno);
     }
   }
-  if (fd < 0) {
+  if (pending->fd() < 0) {
     Fail(path, EEXIST);
   }
-  PendingTemporary pending(temporary);
-  int error = WriteSyncAndClose(fd, bytes);
+  int error = WriteSyncAndClose(pending->fd(), bytes);
   if (error == 0) {
     try {
       RefuseAnythingButARegularFile(path);  // nothing else took its place meanwhile

@@ -166,13 +166,20 @@ void Open(Sdl& sdl, const std::string& chapter, int width, int height, int previ
   Check(sdl.texture != nullptr && sdl.preview != nullptr, "cannot make the picture");
 }
 
-// S: the figure shown into `output`, through the safe write path, and where it went.
+// S: the figure shown into `output`, through the safe write path, and where it went; or,
+// when it cannot be written, why, in one line, with the view all the same (the window
+// stays open: where the camera was walked to is not lost).
 void Save(const Figure& figure, const Shown& shown, const std::filesystem::path& output,
           const std::string& format, const View& view) {
-  std::filesystem::create_directories(output);
   const std::filesystem::path file = output / (figure.name + "." + format);
-  WriteImage(shown.canvas.GetImage(), file);
-  std::cout << "saved " << file.string();
+  try {
+    std::filesystem::create_directories(output);
+    WriteImage(shown.canvas.GetImage(), file);
+    std::cout << "saved " << file.string();
+  } catch (const std::exception& error) {
+    std::cerr << "window: not saved: " << OneLine(error.what()) << std::endl;
+    std::cout << "not saved";
+  }
   if (figure.draw_from) {
     std::cout << " (--view " << FormatView(view) << ")";
   }

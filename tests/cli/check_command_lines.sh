@@ -229,8 +229,43 @@ hostile "a PNG declaring 10000x10000 pixels" 02-basic-rays/fig-2-11 "$work/bomb.
 cp "$good" "$work/keep.png"
 hostile "--diff onto the image being compared" 02-basic-rays/fig-2-11 "$work/keep.png" --diff "$work/keep.png"
 cmp -s "$good" "$work/keep.png" || { echo "FAIL: the user's image was changed"; failures=$((failures + 1)); }
+# Nothing the run reads is written over: a student's image as --html, an image of the
+# folder that is not one of our figures, a golden image as --diff (a copy of ours).
+mkdir -p "$work/inputs/02-basic-rays" "$work/inputs/03-light" "$work/golden-copy"
+cp "$good" "$work/inputs/02-basic-rays/fig-2-11.png"
+cp "$good" "$work/inputs/03-light/fig-3-16.png"
+"$program" --output "$work/golden-copy/02-basic-rays" >/dev/null
+expect 2 "--html onto a student's image in the folder" "$compare" --report "$work/inputs" \
+  --html "$work/inputs/02-basic-rays/fig-2-11.png"
+expect 2 "--html onto an image of the folder that is not one of ours" "$compare" \
+  --report "$work/inputs" --html "$work/inputs/03-light/fig-3-16.png"
+expect 2 "--diff onto a golden image" "$compare" --golden "$work/golden-copy" \
+  02-basic-rays/fig-2-11 "$good" --diff "$work/golden-copy/02-basic-rays/fig-2-11-with-ground.png"
+if ! cmp -s "$good" "$work/inputs/02-basic-rays/fig-2-11.png" ||
+  ! cmp -s "$good" "$work/inputs/03-light/fig-3-16.png" ||
+  ! "$compare" 02-basic-rays/fig-2-11-with-ground \
+    "$work/golden-copy/02-basic-rays/fig-2-11-with-ground.png" --diff "$work/gd.png" >/dev/null; then
+  echo "FAIL: an image the run reads was written over"
+  failures=$((failures + 1))
+fi
+expect 1 "--html beside the folder's images, not over one" "$compare" --report "$work/inputs" \
+  --html "$work/inputs/02-basic-rays/page.html"
+# Names as long as a file name may be (255 bytes) are written; the temporary beside
+# them has a name that fits too.
+long=$(printf 'a%.0s' $(seq 1 240))
+expect 0 "--diff with a 244-byte name" "$compare" 02-basic-rays/fig-2-11 "$good" \
+  --diff "$work/$long.png"
+expect 0 "--diff with a 255-byte name" "$compare" 02-basic-rays/fig-2-11 "$good" \
+  --diff "$work/${long}aaaaaaaaaaa.png"
+# An error that echoes a value with a newline or another control character in it is
+# still one line.
+expect 2 "--size with a newline in it" "$program" --size $'600\nx600' --output "$work/bad"
+expect 2 "--figure with a newline and an escape in it" "$program" --figure $'fig\n\e[2J' \
+  --output "$work/bad"
+expect 2 "an image whose name has a newline in it" "$compare" 02-basic-rays/fig-2-11 \
+  "$work/no"$'\n'"such.png"
 
-# Files are written safely (common/include/cgfs/safe_file.h): never over something that
+# Files are written safely (program/include/program/safe_file.h): never over something that
 # is not a regular file, never through what stands at a temporary's name, whole or not
 # at all, and nothing left behind.
 safe=$work/safe
@@ -301,11 +336,15 @@ fi
 mkdir -p "$safe/term"
 "$program" --figure fig-2-11 --size 64x64 --format ppm --output "$safe/term" >/dev/null
 cp "$safe/term/fig-2-11.ppm" "$safe/old.ppm"
+# The same with SIGHUP, the terminal closed. (SIGINT cannot be tried here: a shell
+# without job control starts its background programs with SIGINT ignored.)
 caught=0
-for attempt in 1 2 3 4; do
+for attempt in 1 2 3 4 5 6; do
+  signal=TERM
+  [ $((attempt % 2)) -eq 0 ] && signal=HUP
   "$program" --figure fig-2-11 --size 4096x4096 --format ppm --output "$safe/term" >/dev/null 2>&1 &
   victim=$!
-  if [ $attempt -eq 4 ]; then
+  if [ $attempt -ge 5 ]; then
     sleep 0.1  # while drawing
   else
     for _ in $(seq 500); do
@@ -313,21 +352,22 @@ for attempt in 1 2 3 4; do
       sleep 0.01
     done
   fi
-  kill -TERM $victim 2>/dev/null
+  kill -$signal $victim 2>/dev/null
   wait $victim 2>/dev/null
-  [ $? -eq 143 ] && caught=$((caught + 1))
+  status=$?
+  { [ $status -eq 143 ] || [ $status -eq 129 ]; } && caught=$((caught + 1))
   if [ "$(leftovers "$safe/term")" -ne 0 ]; then
-    echo "FAIL: SIGTERM (try $attempt) left a temporary file behind"
+    echo "FAIL: SIG$signal (try $attempt) left a temporary file behind"
     failures=$((failures + 1))
   elif ! cmp -s "$safe/term/fig-2-11.ppm" "$safe/old.ppm" &&
     ! "$compare" "$safe/term/fig-2-11.ppm" "$safe/term/fig-2-11.ppm" >/dev/null 2>&1; then
     # Neither the old file nor a whole new one (the signal may come just after the rename).
-    echo "FAIL: SIGTERM (try $attempt) left the figure damaged"
+    echo "FAIL: SIG$signal (try $attempt) left the figure damaged"
     failures=$((failures + 1))
   fi
   cp "$safe/old.ppm" "$safe/term/fig-2-11.ppm"
 done
-echo "ok: SIGTERM while writing (3 tries) and drawing: stopped $caught of 4 times, nothing half-written, nothing left"
+echo "ok: SIGTERM and SIGHUP while writing (4 tries) and drawing: stopped $caught of 6 times, nothing half-written, nothing left"
 
 # Threads that cannot be started (too little address space for their stacks): one line.
 if [ -n "$chapter16" ] && [ -z "${CGFS_SANITIZED:-}" ]; then

@@ -12,6 +12,9 @@
 # --window says so in one line, exit status 2. Leaves screenshots in WORK_DIR. Skipped
 # without Xvfb and xdotool (CI installs them: scripts/setup). CGFS_WINDOW_FIGURES: the
 # figures to open with instead of the first two (a space-separated list).
+# CGFS_WINDOW_UNWRITABLE=1 (with a CAMERA_FIGURE): also a window whose output folder is a
+# file: S says in one line why it saved nothing, prints the moved view all the same, and
+# the window stays open.
 # Usage: check_window.sh PROGRAM GOLDEN_DIR WORK_DIR [CAMERA_FIGURE [SLOW_FIGURE]]
 set -euo pipefail
 program=$1 golden=$2 work=$3 camera=${4:-} slow=${5:-}
@@ -184,6 +187,37 @@ for _ in $(seq 250); do
   [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
   sleep 0.02
 done
+
+if [ -n "$camera" ] && [ "${CGFS_WINDOW_UNWRITABLE:-}" = 1 ]; then
+  echo "a file, not a folder" >"$work/not-a-folder"
+  open_window "$work/unwritable.txt" --figure "$camera" --output "$work/not-a-folder"
+  if [ -z "$window" ]; then
+    cat "$work/unwritable.txt"
+    fail "no window with an unwritable output folder${ended:+ (the program ended, exit status $ended)}"
+    exit 1
+  fi
+  xdotool windowfocus --sync "$window" key Up s
+  for _ in $(seq 500); do
+    grep -q "^not saved" "$work/unwritable.txt" && break
+    sleep 0.02
+  done
+  cat "$work/unwritable.txt"
+  grep -qx "not saved (--view 0,0,0.25,0,0)" "$work/unwritable.txt" \
+    || fail "S into an unwritable folder: no 'not saved' line with the view"
+  [ "$(grep -c "^window: not saved: " "$work/unwritable.txt")" -eq 1 ] \
+    || fail "S into an unwritable folder: not one line saying why"
+  kill -0 $program_pid 2>/dev/null || fail "S into an unwritable folder ended the program"
+  xdotool key Escape
+  status=0
+  wait $program_pid || status=$?
+  program_pid=""
+  [ $status -eq 0 ] || fail "Esc after a failed save: exit status $status, expected 0"
+  [ "$(cat "$work/not-a-folder")" = "a file, not a folder" ] || fail "the file in the way was changed"
+  for _ in $(seq 250); do
+    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
+    sleep 0.02
+  done
+fi
 
 # With a SLOW_FIGURE (one that takes a good part of a second to draw): closed while it
 # draws it (SIGTERM, which SDL turns into a close), S pressed just before, the window

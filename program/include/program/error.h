@@ -19,6 +19,10 @@ class Error : public std::runtime_error {
 // A path as messages name it: in single quotes, 'like/this.png'.
 std::string Quoted(const std::filesystem::path& path);
 
+// The message with its control characters written as escapes (\n, \t, \x1b), so that it
+// prints as one line whatever it echoes.
+std::string OneLine(std::string_view message);
+
 // A mistake on the command line; the report adds "(try --help)".
 class UsageError : public Error {
  public:
