@@ -21,7 +21,7 @@ FNR == NR {
     sub(/^[0-9]+\/[0-9]+ Test: /, "", current)
     stage = 0
   } else if (current ~ /: compiles and links$/ && !(current in reason_of) &&
-             $0 ~ /(error|undefined reference)/) {
+             $0 ~ /(error|undefined reference|out of memory)/) {
     reason_of[current] = trimmed($0)  # the compiler's or linker's first complaint
   } else if (match($0, /not written yet: [A-Za-z_0-9:]+/)) {
     missing_of[current] = substr($0, RSTART + 17, RLENGTH - 17)

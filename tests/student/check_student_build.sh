@@ -11,7 +11,10 @@
 #   - chapter 02 copied forward as 03 without our new header is told to take it;
 #   - a copy that does not compile fails with its first error, and ctest afterwards
 #     does not pass; a faithful chapter beside it is tested all the same;
-#   - a missing or misnamed folder gets one line and exit status 2;
+#   - a missing or misnamed folder gets one line and exit status 2, and so does a path
+#     the build tools cannot carry;
+#   - a header that includes /dev/zero stops the compiler at its memory limit, and is
+#     reported as headers that do not compile;
 #   - the five examples of `scripts/test-student` in docs/students.md (each under a line
 #     "<!-- example: NAME -->") are these runs' command and output, word for word.
 # Usage: check_student_build.sh SOURCE_DIR WORK_DIR
@@ -163,5 +166,28 @@ check "it gives the name its folder needs" says "its folder must be named 02-bas
 run ~/my-cgfs/02-basic-rays
 check "a chapter folder given for its parent: exit status 2" test $status -eq 2
 check "it says to give the parent folder" says "is itself a chapter folder: give its parent folder"
+# Paths the build tools cannot carry are refused in one line, not reported as a chapter
+# that does not compile.
+for name in 'with"quote' 'with$dollar' 'with;semicolon' 'with${HOME}' 'with\backslash'; do
+  mkdir -p ~/"$name/02-basic-rays"
+  cp "$student"/* ~/"$name/02-basic-rays/"
+  run ~/"$name" 02
+  check "a folder named $name: exit status 2" test $status -eq 2
+  check "a folder named $name: one line" test "$(wc -l <"$work/out.txt")" -eq 1
+  check "a folder named $name: it says why" says "holds a character the build cannot carry"
+done
+
+echo "== a header that includes /dev/zero"
+mkdir -p ~/zero/02-basic-rays
+cp "$student"/* ~/zero/02-basic-rays/
+sed -i '0,/^#include/s||#include "/dev/zero"\n#include|' ~/zero/02-basic-rays/raytracer.h
+CGFS_BUILD_MEMORY_KB=1048576 CGFS_BUILD_TIMEOUT=120 run ~/zero 02
+check "the compiler stops at its memory limit: exit status 1" test $status -eq 1
+check "the header check says the headers do not compile" \
+  says "^02-basic-rays: your headers do not compile on their own"
+check "and not that they declare functions unlike ours" \
+  bash -c '! grep -q "declare book functions unlike ours" "$0"' "$work/out.txt"
+check "the last line says why the run fails" \
+  says "^your headers do not compile on their own \(above\): the run fails until they do$"
 
 [ $failed -eq 0 ] && echo "PASS: the documented student path works" || exit 1
