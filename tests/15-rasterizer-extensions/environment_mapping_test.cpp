@@ -64,3 +64,27 @@ TEST_CASE("a cube map shows what is around its centre, in each direction",
   scene.instances[0].model = &mirror;
   CHECK(SampleCubeMap(RenderCubeMap(scene, {0, 0, 0}, 32), {0, 0, 1}) == Color(255, 255, 255));
 }
+
+TEST_CASE("SampleCubeMap reads the texels at (s S, t S - 1) of the direction's face",
+          "[environment-mapping]") {
+  // Faces of 4 x 4 texels; on +Z, texel (i, j) is grey 10 i + j, every other face black.
+  // Direction (x, y, 1) is on +Z at s = (x + 1) / 2, t = (1 - y) / 2, read at
+  // (4 s, 4 t - 1) = (2 x + 2, 1 - 2 y), bilinear as GetTexel reads.
+  CubeMap cube_map;
+  for (Texture& face : cube_map.faces) {
+    face = {4, 4, std::vector<Color>(16, Color(0, 0, 0))};
+  }
+  Texture& front = cube_map.faces[static_cast<std::size_t>(CubeFace::kPositiveZ)];
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) {
+      front.texels[static_cast<std::size_t>(j * 4 + i)] = Color(10 * i + j);
+    }
+  }
+  CHECK(SampleCubeMap(cube_map, {0, 0, 1}).r == Approx(21));  // (2, 1): a texel itself
+  // (1.5, 0.5): texels (1, 0), (2, 0), (1, 1), (2, 1) = 10, 20, 11, 21, halfway: 15.5.
+  CHECK(SampleCubeMap(cube_map, {-0.25, 0.25, 1}).r == Approx(15.5));
+  // (3, 2.8): 0.2 of texel (3, 2), 0.8 of (3, 3), 32.8. (At y = -1 the direction would
+  // be as much -Y as +Z, and a tie goes to the Y faces.)
+  CHECK(SampleCubeMap(cube_map, {0.5, -0.9, 1}).r == Approx(32.8));
+  CHECK(SampleCubeMap(cube_map, {0, 0, -1}).r == 0);  // the -Z face
+}

@@ -10,8 +10,8 @@ TEST_CASE("InShadow: the cases of 15-rasterizer-extensions.json", "[shadow-mappi
   for (const cgfs::test::FunctionCase& c :
        cgfs::test::CasesOf("15-rasterizer-extensions.json", "InShadow")) {
     INFO(c.Describe());
-    const bool shadowed = InShadow(ToNumber(c.args.at("stored_depth")), ToNumber(c.args.at("depth")),
-                                   ToNumber(c.args.at("bias")));
+    const bool shadowed = InShadow(ToNumber(c.args.at("stored_depth")),
+                                   ToNumber(c.args.at("depth")), ToNumber(c.args.at("bias")));
     CHECK_THAT(cgfs::test::AsNumbers(shadowed ? 1.0 : 0.0), cgfs::test::MatchesCase(c));
   }
 }
@@ -92,4 +92,75 @@ TEST_CASE("a directional light's orthographic map does the same", "[shadow-mappi
   CHECK(LightVisibility(map, {1.3, 0, 0}, up) == 1);     // straight down, missed
   CHECK(LightVisibility(map, {0, 3, 0}, up) == 1);
   CHECK(RenderShadowMap(FloorAndCube(), {LightType::kAmbient, 1}, settings).views.empty());
+}
+
+namespace {
+
+// A directional light's map made by hand: 4 x 4 entries over x and y in [-2, 2] (the
+// view's space is the world's), every entry holding z = 100 but entry (2, 1), which holds
+// an occluder at z = 1. A point (x, y, z) falls at tx = 4 (x / 2 + 1) / 2 = x + 2 and
+// ty = 4 (-y / 2 + 1) / 2 - 1 = 1 - y among the entries (entry (i, j) at the point
+// (i, j)); the bias there is one entry (1 unit) for a surface facing the light.
+ShadowMap OneOccludedEntry() {
+  DepthMap view;
+  view.size = 4;
+  view.depths.assign(16, 100);
+  view.depths[1 * 4 + 2] = 1;
+  view.orthographic = true;
+  view.half_width = 2;
+  ShadowMap map;
+  map.views = {view};
+  map.light = {LightType::kDirectional, 1, {}, {0, 0, -1}};
+  return map;
+}
+
+}  // namespace
+
+TEST_CASE("the nearest lookup reads the entry nearest the point, rounded", "[shadow-mapping]") {
+  const ShadowMap map = OneOccludedEntry();
+  const Vec3 N(0, 0, -1);  // facing the light
+  // (tx, ty) = (1.6, 1.3): nearest entry (2, 1), the occluder. Truncated, (1, 1): lit.
+  CHECK(LightVisibility(map, {-0.4, -0.3, 10}, N) == 0);
+  // (1.4, 1.3): entry (1, 1), lit; (2.4, 0.6): entry (2, 1) again; (2.6, 1.3): (3, 1).
+  CHECK(LightVisibility(map, {-0.6, -0.3, 10}, N) == 1);
+  CHECK(LightVisibility(map, {0.4, 0.4, 10}, N) == 0);
+  CHECK(LightVisibility(map, {0.6, -0.3, 10}, N) == 1);
+  // (2, 1.6): entry (2, 2), below the occluder's.
+  CHECK(LightVisibility(map, {0, -0.6, 10}, N) == 1);
+}
+
+TEST_CASE("percentage-closer filtering reads the four entries around the point",
+          "[shadow-mapping]") {
+  ShadowMap map = OneOccludedEntry();
+  map.settings.percentage_closer_filtering = true;
+  const Vec3 N(0, 0, -1);
+  // (tx, ty) = (1.6, 1.3): entries (1, 1), (2, 1), (1, 2), (2, 2), fx = 0.6, fy = 0.3; only
+  // the top right one (2, 1) is occluded, weighing 0.6 x 0.7 = 0.42: 0.58 of the light.
+  CHECK(LightVisibility(map, {-0.4, -0.3, 10}, N) == Approx(0.58));
+  // (2.25, 1.5): entries (2, 1) top left ... (3, 2); (2, 1) weighs 0.75 x 0.5.
+  CHECK(LightVisibility(map, {0.25, -0.5, 10}, N) == Approx(0.625));
+  // (0.5, 0.5): entries (0, 0) ... (1, 1), none occluded.
+  CHECK(LightVisibility(map, {-1.5, 0.5, 10}, N) == 1);
+}
+
+TEST_CASE("a point light's face and entry: the direction picks the face, then the nearest entry",
+          "[shadow-mapping]") {
+  // The light at the origin; its +Z face (the view's space is the world's) 4 x 4 entries
+  // of 1/z, all empty (0: nothing there) but entry (2, 1), an occluder at z = 0.5. A point
+  // (x, 0, 2) is on the +Z face at s = (x / 2 + 1) / 2, tx = 4 s = x + 2, and ty = 4 t - 1 =
+  // 1; its entry is one unit wide there (2 z / 4), and so is the bias.
+  ShadowMap map;
+  map.light = {LightType::kPoint, 1, {0, 0, 0}};
+  for (int f = 0; f < 6; ++f) {
+    DepthMap face;
+    face.size = 4;
+    face.depths.assign(16, 0);
+    face.world_to_view = MakeCameraMatrix({0, 0, 0}, CubeFaceOrientation(static_cast<CubeFace>(f)));
+    map.views.push_back(face);
+  }
+  map.views[static_cast<std::size_t>(CubeFace::kPositiveZ)].depths[1 * 4 + 2] = 1 / 0.5;
+  const Vec3 N(0, 0, -1);
+  CHECK(LightVisibility(map, {-0.4, 0, 2}, N) == 0);           // tx = 1.6: entry (2, 1)
+  CHECK(LightVisibility(map, {-0.6, 0, 2}, N) == 1);           // tx = 1.4: entry (1, 1)
+  CHECK(LightVisibility(map, {-0.4, 0, -2}, {0, 0, 1}) == 1);  // behind: the -Z face, empty
 }

@@ -132,3 +132,25 @@ TEST_CASE("the stencil buffer counts per pixel and clears", "[shadow-volumes]") 
   stencil.Clear();
   CHECK(stencil.At(-2, 1) == 0);
 }
+
+TEST_CASE("the stencil buffer's cells are the canvas's pixels, corners included",
+          "[shadow-volumes]") {
+  // A 4 x 2 canvas: x in [-2, 1], y in [-1, 0]. Each corner is its own cell, and a point
+  // just off any edge is no cell at all.
+  Canvas canvas(4, 2);
+  StencilBuffer stencil(canvas);
+  stencil.Add(-2, -1, 1);
+  stencil.Add(1, -1, 2);
+  stencil.Add(-2, 0, 3);
+  stencil.Add(1, 0, 4);
+  CHECK(stencil.At(-2, -1) == 1);
+  CHECK(stencil.At(1, -1) == 2);
+  CHECK(stencil.At(-2, 0) == 3);
+  CHECK(stencil.At(1, 0) == 4);
+  for (const auto& [x, y] : {std::pair{2, 0}, {-3, 0}, {0, 1}, {0, -2}}) {
+    stencil.Add(x, y, 9);
+    CHECK(stencil.At(x, y) == 0);
+  }
+  CHECK(stencil.At(0, 0) == 0);
+  CHECK(stencil.At(-1, -1) == 0);
+}
