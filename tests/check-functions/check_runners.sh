@@ -4,8 +4,11 @@
 # reference with mistakes gets, per function, the failed case with what it catches, a
 # function that raises or never returns or returns the wrong type one line each, a
 # missing function "not written yet"; a module that does not load one line and exit 1,
-# a wrong chapter one line and exit 2; the student's folder is left as it was. And
-# every function of every case file is read by a C++ test (one set of cases for both).
+# a wrong chapter one line and exit 2; the student's folder is left as it was; student
+# code that ends the checker's process, hangs, or tampers with the checker fails and never
+# passes; a dict-style Python chapter passes without an adapter, and a JavaScript one
+# with settings of its own with the template adapter. And every function of every case
+# file is read by a C++ test (one set of cases for both).
 # Skipped without python3 or node (CI installs them: scripts/setup).
 # Usage: check_runners.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -129,6 +132,90 @@ if command -v node >/dev/null; then
 else
   echo "SKIPPED: no node to run the JavaScript runner (CI installs nodejs: scripts/setup)"
 fi
+# Student code that tries to end, hang or fool the checker: its cases fail (or it does not
+# load), in about the time limit each, and it never passes. RUNNER... then, for each
+# hostile module, MODULE DESCRIPTION.
+if command -v python3 >/dev/null; then
+  echo "== Python: student code that ends, hangs or tampers with the checker"
+  hostile=$work/python-hostile
+  mkdir -p "$hostile"
+  base=$source_dir/tools/check-functions/python/reference/basic_rays.py
+  echo 'import os; os._exit(0)' >"$hostile/exit_at_import.py"
+  { cat "$base"; printf '\ndef CanvasToViewport(x, y):\n    import os\n    os._exit(0)\n'; } >"$hostile/exit_in_function.py"
+  { cat "$base"; printf '\nimport signal\nsignal.signal(signal.SIGALRM, signal.SIG_IGN)\n\n\ndef CanvasToViewport(x, y):\n    while True:\n        try:\n            while True:\n                pass\n        except BaseException:\n            pass\n'; } >"$hostile/endless_loop.py"
+  { cat "$base"; printf '\ndef CanvasToViewport(x, y):\n    def ones():\n        while True:\n            yield 1.0\n    return ones()\n'; } >"$hostile/endless_generator.py"
+  { cat "$base"; printf '\nimport builtins, sys\nbuiltins.abs = lambda value: 0\nif hasattr(sys.modules["__main__"], "run_case"):\n    sys.modules["__main__"].run_case = lambda *a, **k: {"values": [0, 0, 1]}\n\n\ndef CanvasToViewport(x, y):\n    return (9, 9, 9)\n'; } >"$hostile/tampers.py"
+  run python3 "$python_runner" 02 "$hostile/exit_at_import.py"
+  check "Python: os._exit(0) at import: does not load, exit status 1" \
+    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
+  check "it says the module ended the process" says "ended the process \(exit status 0\) while loading"
+  for name in exit_in_function endless_loop endless_generator tampers; do
+    start=$SECONDS
+    run python3 "$python_runner" 02 "$hostile/$name.py" --time-limit 0.5
+    check "Python, $name: exit status 1" test $status -eq 1
+    check "Python, $name: CanvasToViewport failed every case" says "^  CanvasToViewport +FAILED [45] of 5 cases"
+    [ $name = tampers ] ||
+      check "Python, $name: the other functions are still judged" says "^  TraceRay +passed \(9 cases\)"
+    check "Python, $name: within 15 s" test $((SECONDS - start)) -le 15
+  done
+  for chapter in '*' /etc 2; do
+    run python3 "$python_runner" "$chapter" "$base"
+    check "Python: chapter '$chapter': exit status 2, one line" \
+      test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+  done
+  echo "== Python: a chapter written with dicts, the book's globals, no adapter"
+  run python3 "$python_runner" 02 "$source_dir/tests/check-functions/students/dict_style.py"
+  check "the dict-style chapter passes without an adapter" test $status -eq 0
+  cp "$source_dir/tests/check-functions/students/dict_style.py" "$hostile/own_globals.py"
+  sed -i 's/\bscene\b/SPHERES_SCENE/g' "$hostile/own_globals.py"
+  run python3 "$python_runner" 02 "$hostile/own_globals.py"
+  check "one keeping its own globals fails, told which the checker set" \
+    says "^    note: the checker set scene, BACKGROUND_COLOR on your module before these cases"
+  python3 "$python_runner" --adapter-template >"$hostile/adapter.py"
+  check "--adapter-template prints an adapter that loads" python3 -c "import ast, sys; ast.parse(open(sys.argv[1]).read())" "$hostile/adapter.py"
+fi
+if command -v node >/dev/null; then
+  echo "== JavaScript: student code that ends, hangs or tampers with the checker"
+  hostile=$work/js-hostile
+  mkdir -p "$hostile"
+  base=$source_dir/tools/check-functions/js/reference/basic-rays.js
+  cp "$source_dir/tools/check-functions/js/reference/basic-rays-adapter.js" "$hostile/adapter.js"
+  echo 'process.exit(0);' >"$hostile/exit-at-import.js"
+  with() {  # NAME CODE: the reference, its CanvasToViewport replaced by CODE
+    sed "s|^function CanvasToViewport(x, y) {|function CanvasToViewport(x, y) {\n$2|" "$base" >"$hostile/$1.js"
+    sed -i "s|\./basic-rays\.js|./$1.js|" "$hostile/adapter.js"
+    cp "$hostile/adapter.js" "$hostile/$1-adapter.js"
+    sed -i "s|\./$1\.js|./basic-rays.js|" "$hostile/adapter.js"
+  }
+  with exit-in-function '  process.exit(0);'
+  with endless-loop '  for (;;) {}'
+  with tampers '  Math.abs = () => 0; if (process.send) process.send({ done: true, id: 1, values: [0, 0, 1] }); return [9, 9, 9];'
+  run node "$js_runner" 02 "$hostile/exit-at-import.js"
+  check "JavaScript: process.exit(0) at import: does not load, exit status 1" \
+    test $status -eq 1 -a "$(wc -l <"$work/out.txt")" -eq 1
+  for name in exit-in-function endless-loop tampers; do
+    start=$SECONDS
+    run node "$js_runner" 02 "$hostile/$name.js" --adapter "$hostile/$name-adapter.js" --time-limit 0.5
+    check "JavaScript, $name: exit status 1" test $status -eq 1
+    check "JavaScript, $name: CanvasToViewport failed every case" says "^  CanvasToViewport +FAILED [45] of 5 cases"
+    [ $name = tampers ] ||
+      check "JavaScript, $name: the other functions are still judged" says "^  TraceRay +passed \(9 cases\)"
+    check "JavaScript, $name: within 15 s" test $((SECONDS - start)) -le 15
+  done
+  run node "$js_runner" 02 "$base" --adapter
+  check "JavaScript: --adapter without a file: exit status 2, one line" \
+    test $status -eq 2 -a "$(wc -l <"$work/out.txt")" -eq 1
+  echo "== JavaScript: a chapter with settings of its own, and the template adapter"
+  students=$source_dir/tests/check-functions/students
+  run node "$js_runner" 02 "$students/own-settings.js"
+  check "without an adapter it fails, told which globals the checker set" \
+    says "^    note: the checker set Cw, Ch, Vw, Vh, d on globalThis before these cases"
+  cp "$students/own-settings.js" "$hostile/"
+  node "$js_runner" --adapter-template | sed 's|\./raytracer\.js|./own-settings.js|' >"$hostile/own-adapter.js"
+  run node "$js_runner" 02 "$hostile/own-settings.js" --adapter "$hostile/own-adapter.js"
+  check "with the template adapter, its require pointed at it, it passes" test $status -eq 0
+fi
+
 if command -v python3 >/dev/null && command -v node >/dev/null; then
   echo "== docs/students.md: its commands as written, on its layout"
   export HOME=$work/home

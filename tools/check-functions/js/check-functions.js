@@ -3,6 +3,7 @@
 // time (Node 18 or newer, no packages):
 //
 //     node check-functions.js CHAPTER your-module.js [--adapter your-adapter.js] [--time-limit S]
+//     node check-functions.js --adapter-template
 //
 // CHAPTER is a chapter's number or folder name (02, 02-basic-rays). For every book
 // function of the chapter that has cases in tests/cases/CHAPTER.json (the cases our C++
@@ -12,15 +13,19 @@
 //
 // The book's data reach your code as the default adapter below makes them: vectors and
 // colours as arrays [x, y, z], 4x4 matrices as arrays of their rows, textures as
-// texture[i][j] (column i, row j), spheres, lights, planes, models and transforms as
-// objects with the book's fields (sphere.center, light.type === "point", plane.normal,
-// plane.D, model.triangles[k].v, transform.scale), and the book's globals (Cw, Ch,
-// Vw, Vh, d, scene, BACKGROUND_COLOR) set on globalThis before each case. An adapter
-// module of yours may export any of the default adapter's functions to build your own
-// types, or to hand the globals to your module (docs/students.md has an example).
+// texture[i][j] (column i, row j), spheres, lights, planes, models, transforms and scenes
+// as plain objects with the book's fields (sphere.center or sphere["center"], or
+// destructured, light.type === "point", plane.normal, plane.D, model.triangles[k].v,
+// transform.scale), and the book's globals (Cw, Ch, Vw, Vh, d, scene, BACKGROUND_COLOR)
+// set on globalThis before each case. An adapter module of yours may export any of the
+// default adapter's functions to build your own types, or to hand the globals to your
+// module; --adapter-template prints one to fill in (docs/students.md has an example).
 //
-// Each case runs in a worker thread, so that one that never returns is stopped after
-// the time limit (default 5 s). Exit status: 0 every case of every written function
+// Your code runs in a process of its own, which this one judges from outside: it is sent
+// each case's inputs and reports what your function returned; the verdict, against the
+// expected values it never sees, is made here. A case that runs past the time limit
+// (default 5 s), or a process that ends or says nothing more, fails, and a new process
+// goes on with the next case. Exit status: 0 every case of every written function
 // passed, 1 a case failed or your module does not load, 2 the command line is wrong.
 // Nothing is written anywhere.
 "use strict";
@@ -28,7 +33,7 @@
 const fs = require("fs");
 const path = require("path");
 const { pathToFileURL } = require("url");
-const { Worker, isMainThread, parentPort, workerData } = require("worker_threads");
+const { fork } = require("child_process");
 
 const CASES_DIR = path.resolve(__dirname, "..", "..", "..", "tests", "cases");
 
@@ -251,41 +256,159 @@ function pixelDifferences(drawn, expected) {
   return lines.length ? lines.join("\n      ") : null;
 }
 
-// null when the case passes, else what went wrong, in one line.
-function runCase(entry, kase, adapter, module) {
-  let args;
+// The worker: the process your code runs in. It loads your module (and adapter), says
+// which of the book functions it is asked about your module has, then runs each case it
+// is sent and reports what your function returned (or drew, or threw), never a verdict:
+// it is sent a case's inputs only, never what is expected.
+
+// What your function made of one case: { values }, { pixels } or { problem }.
+function runCase(request, adapter, module) {
+  const { case: kase, parameters, returns } = request;
   const given = decoded(kase.given ?? {});
   let canvas = null;
-  if (entry.returns === "pixels") {  // what the function draws, through the checker's PutPixel
+  if (returns === "pixels") {  // what the function draws, through the checker's PutPixel
     canvas = new Canvas(given.canvas.width, given.canvas.height);
     given.canvas.PutPixel = canvas.PutPixel;
   }
   let calls;  // one call, or several in turn on one canvas and depth buffer (kase.calls)
   try {
     adapter.setup(module, given, adapter);
-    calls = (kase.calls ?? [kase.args]).map((call) => entry.parameters.map(([name, kind]) => {
+    calls = (kase.calls ?? [kase.args]).map((call) => parameters.map(([name, kind]) => {
       const value = decoded(call[name]);
       return kind === "number" ? value : adapter[kind](value, adapter);
     }));
   } catch (error) {
-    return `your adapter failed to build the inputs: ${where(error)}`;
+    return { problem: `your adapter failed to build the inputs: ${where(error)}` };
   }
   let value;
+  let args;
   try {
-    for (args of calls) value = module[entry.function](...args);
+    for (args of calls) value = module[request.function](...args);
   } catch (error) {
-    return `threw ${where(error)}`;
+    return { problem: `threw ${where(error)}` };
   }
-  if (canvas) return pixelDifferences(canvas.drawn(), kase.expected);
-  if (value === undefined && entry.returns === "triangles") value = args[0];  // CullBackFaces changes its object
+  if (canvas) return { pixels: canvas.drawn() };
+  if (value === undefined && returns === "triangles") value = args[0];  // CullBackFaces changes its object
   // The case's globals, and the arguments as your function was given them (after it ran).
-  const arguments_ = Object.fromEntries(entry.parameters.map(([name], i) => [name, args[i]]));
-  let actual;
+  const arguments_ = Object.fromEntries(parameters.map(([name], i) => [name, args[i]]));
   try {
-    actual = adapter.result(entry.returns, value, { ...decoded(kase.given ?? {}), arguments: arguments_ }, adapter);
+    const values = adapter.result(returns, value, { ...decoded(kase.given ?? {}), arguments: arguments_ }, adapter);
+    return { values: Array.from(values, (each) => {
+      if (typeof each !== "number") throw new TypeError("not a number");
+      return each;
+    }) };
   } catch {
-    return `returned ${JSON.stringify(value) ?? String(value)}, not a ${entry.returns}`;
+    let shownValue;
+    try {
+      shownValue = (JSON.stringify(value) ?? String(value)).slice(0, 200);
+    } catch {
+      shownValue = `a ${typeof value}`;
+    }
+    return { problem: `returned ${shownValue}, not a ${returns}` };
   }
+}
+
+async function work(modulePath, adapterPath) {
+  const send = process.send.bind(process);
+  let module, adapter;
+  const asked = new Promise((resolve) => process.once("message", resolve));
+  try {
+    const own = adapterPath ? await load(adapterPath, "your adapter") : {};
+    adapter = { ...defaultAdapter, ...own };
+    module = await load(modulePath, "your module");
+  } catch (error) {
+    send({ loadError: error.message });
+    return;
+  }
+  const { functions } = await asked;
+  send({ loaded: functions.filter((name) => typeof module[name] === "function") });
+  process.on("message", (request) => {
+    send({ id: request.id, ...runCase(request, adapter, module) });
+  });
+}
+
+// The checker's side: a worker process at a time, judged by what it reports.
+
+const LOAD_LIMIT = 60;  // seconds a module may take to load, apart from its cases' time limit
+
+// A worker process on your module; resolves to { worker, written } once it has loaded,
+// or rejects with a load error.
+function startWorker(options, names) {
+  return new Promise((resolve, reject) => {
+    // What your code prints is not shown: it would break the report's lines.
+    const worker = fork(__filename, ["--worker", options.module, options.adapter ?? ""], {
+      stdio: ["ignore", "ignore", "ignore", "ipc"], serialization: "advanced", execArgv: [],
+    });
+    const fail = (message) => { clearTimeout(timer); worker.removeAllListeners(); worker.kill("SIGKILL"); reject(Object.assign(new Error(message), { load: true })); };
+    const timer = setTimeout(() => fail(`your module ${options.module} does not load: still running after ${LOAD_LIMIT} s`), LOAD_LIMIT * 1000);
+    worker.on("exit", (code, signal) => fail(`your module ${options.module} does not load: it ended the process (exit ${signal ? `signal ${signal}` : `status ${code}`}) while loading`));
+    worker.on("error", (error) => fail(`your module ${options.module} does not load: ${error.message}`));
+    worker.once("message", (message) => {
+      if (message && message.loadError) { fail(String(message.loadError)); return; }
+      if (!message || !Array.isArray(message.loaded)) { fail(`your module ${options.module} does not load: it said something else while loading`); return; }
+      clearTimeout(timer);
+      worker.removeAllListeners();
+      resolve({ worker, written: new Set(message.loaded) });
+    });
+    worker.send({ functions: names });
+  });
+}
+
+// Runs the cases on a worker at a time, starting a new one after a case that did not come
+// back; each case resolves to { values } / { pixels } / { problem }.
+class Session {
+  constructor(options, names) {
+    Object.assign(this, { options, names, worker: null, nextId: 0 });
+  }
+  async start() {
+    ({ worker: this.worker, written: this.written } = await startWorker(this.options, this.names));
+  }
+  async run(entry, kase) {
+    if (!this.worker) {
+      try {
+        await this.start();
+      } catch (error) {
+        return { problem: `a new process for the next cases could not load your module: ${error.message}` };
+      }
+    }
+    const id = ++this.nextId;
+    const worker = this.worker;
+    const inputs = Object.fromEntries(["given", "args", "calls"].filter((key) => key in kase).map((key) => [key, kase[key]]));
+    return new Promise((resolve) => {
+      const done = (result, stop) => {
+        clearTimeout(timer);
+        worker.removeAllListeners();
+        if (stop) {
+          worker.kill("SIGKILL");
+          this.worker = null;
+        }
+        resolve(result);
+      };
+      const timer = setTimeout(() => done({ problem: `did not return within ${this.options.timeLimit} s` }, true),
+        this.options.timeLimit * 1000);
+      worker.on("exit", (code, signal) => done({ problem: `ended the process it ran in (exit ${signal ? `signal ${signal}` : `status ${code}`}) instead of returning` }, true));
+      worker.on("message", (message) => {
+        if (!message || message.id !== id) done({ problem: "said something else than what it returned" }, true);
+        else done(message, false);
+      });
+      try {
+        worker.send({ id, function: entry.function, case: inputs, parameters: entry.parameters, returns: entry.returns });
+      } catch {
+        done({ problem: "ended the process it ran in instead of returning" }, true);
+      }
+    });
+  }
+  close() {
+    if (this.worker) this.worker.kill("SIGKILL");
+  }
+}
+
+// null when the case passes, else what went wrong.
+function verdict(reply, kase, returns) {
+  if ("problem" in reply) return String(reply.problem);
+  if (returns === "pixels") return pixelDifferences(Array.isArray(reply.pixels) ? reply.pixels : [], kase.expected);
+  let actual = reply.values;
+  if (!Array.isArray(actual) || !actual.every((each) => typeof each === "number")) return "returned something that is not numbers";
   // Every number expected, lists within lists flattened in order; true and false are 1 and 0.
   const expected = kase.expected === null ? [] : [decoded(kase.expected)].flat(Infinity).map(Number);
   // As a canvas truncates pixel coordinates.
@@ -296,69 +419,52 @@ function runCase(entry, kase, adapter, module) {
   return `returned ${shown(actual)}${kase.compare ? " (truncated)" : ""}, expected ${shown(expected)}${tolerance ? ` (within ${tolerance})` : ""}`;
 }
 
-// The worker: loads the module and the adapter, runs the cases from `start` on, and
-// posts each verdict.
-async function work() {
-  const { file, module: modulePath, adapter: adapterPath, start } = workerData;
-  const cases = JSON.parse(fs.readFileSync(file, "utf8"));
-  let module, adapter;
-  try {
-    const own = adapterPath ? await load(adapterPath, "your adapter") : {};
-    adapter = { ...defaultAdapter, ...own };
-    module = await load(modulePath, "your module");
-  } catch (error) {
-    parentPort.postMessage({ loadError: error.message });
-    return;
-  }
-  let index = 0;
-  for (const entry of cases.functions) {
-    for (const kase of entry.cases) {
-      if (index++ < start) continue;
-      const written = typeof module[entry.function] === "function";
-      parentPort.postMessage({ index: index - 1, problem: written ? runCase(entry, kase, adapter, module) : undefined, written });
-    }
-  }
-  parentPort.postMessage({ done: true });
+// The globals each kind of a case's "given" sets on globalThis (defaultAdapter.setup).
+const GLOBALS_SET = { canvas: "Cw, Ch", viewport: "Vw, Vh, d", scene: "scene, BACKGROUND_COLOR", depth_buffer: "depth_buffer", camera: "camera" };
+
+// The line that says which globals the checker set, when a failed case set any.
+function globalsNote(failures) {
+  const kinds = Object.keys(GLOBALS_SET).filter((kind) => failures.some(({ kase }) => kase.given && kind in kase.given));
+  if (kinds.length === 0) return null;
+  return `    note: the checker set ${kinds.map((kind) => GLOBALS_SET[kind]).join(", ")} on globalThis before these cases; ` +
+    "if your module keeps its own, give an adapter (docs/students.md, \"How the book's data reach your code\"; " +
+    "--adapter-template prints one to fill in)";
 }
 
-// Runs every case, a worker at a time; a case past the time limit stops its worker,
-// and a new one goes on from the next case. Resolves to the verdicts, by case index.
-function runAll(file, options, count) {
-  return new Promise((resolve, reject) => {
-    const verdicts = [];
-    const startWorker = (start) => {
-      const worker = new Worker(__filename, {
-        workerData: { file, module: options.module, adapter: options.adapter, start },
-      });
-      let timer;
-      const arm = (limit) => {
-        clearTimeout(timer);
-        timer = setTimeout(() => {
-          worker.terminate();
-          const index = verdicts.length;
-          verdicts.push({ written: true, problem: `did not return within ${options.timeLimit} s` });
-          if (index + 1 < count) startWorker(index + 1); else resolve(verdicts);
-        }, limit * 1000);
-      };
-      arm(Math.max(60, options.timeLimit));  // loading the module
-      worker.on("message", (message) => {
-        if (message.loadError) { clearTimeout(timer); reject(Object.assign(new Error(message.loadError), { load: true })); return; }
-        if (message.done) { clearTimeout(timer); resolve(verdicts); return; }
-        verdicts[message.index] = message;
-        arm(options.timeLimit);
-      });
-      worker.on("error", (error) => { clearTimeout(timer); reject(Object.assign(new Error(`your module failed: ${where(error)}`), { load: true })); });
-    };
-    startWorker(0);
-  });
-}
+const ADAPTER_TEMPLATE = `// An adapter for check-functions.js (docs/students.md, "How the book's data reach your
+// code"): give it with --adapter. Export only what your module needs; each function here
+// takes the place of the checker's own of the same name.
+const mine = require("./raytracer.js");  // your module: the one you give the checker
+
+module.exports = {
+  // Called before each case, with what the case sets as the book's globals:
+  //   given.canvas    { width, height, and for drawing functions PutPixel(x, y, color) }
+  //   given.viewport  { width, height, d }
+  //   given.scene     { spheres: [...], lights: [...], background_color: [r, g, b] }
+  // Put them where your module reads them: a module whose globals are its own
+  // (const Cw = 600) exports a function that sets them, called here.
+  setup(module, given, adapter) {
+    mine.configure({
+      canvas: given.canvas,
+      viewport: given.viewport,
+      scene: given.scene && adapter.scene(given.scene, adapter),
+    });
+  },
+  // Your own types, if your functions take them (each gets the case's JSON value):
+  // vector: ([x, y, z]) => new Vec3(x, y, z),
+};
+`;
 
 function parse(argv) {
   const options = { timeLimit: 5 };
   const positional = [];
+  const value = (i) => {
+    if (i >= argv.length || argv[i].startsWith("--")) throw new Usage(`${argv[i - 1]} needs a value (usage: CHAPTER MODULE [--adapter FILE] [--time-limit SECONDS])`);
+    return argv[i];
+  };
   for (let i = 0; i < argv.length; ++i) {
-    if (argv[i] === "--adapter") options.adapter = argv[++i];
-    else if (argv[i] === "--time-limit") options.timeLimit = Number(argv[++i]);
+    if (argv[i] === "--adapter") options.adapter = value(++i);
+    else if (argv[i] === "--time-limit") options.timeLimit = Number(value(++i));
     else if (argv[i].startsWith("-")) throw new Usage(`unknown option ${argv[i]} (usage: CHAPTER MODULE [--adapter FILE] [--time-limit SECONDS])`);
     else positional.push(argv[i]);
   }
@@ -372,43 +478,59 @@ function parse(argv) {
 }
 
 async function main() {
+  if (process.argv.length === 3 && process.argv[2] === "--adapter-template") {
+    process.stdout.write(ADAPTER_TEMPLATE);
+    return 0;
+  }
   const options = parse(process.argv.slice(2));
   const files = fs.readdirSync(CASES_DIR).filter((name) => name.endsWith(".json")).sort();
+  const have = files.map((f) => f.replace(/\.json$/, "")).join(", ");
+  if (!/^[0-9]{2}(-[a-z0-9-]+)?$/.test(options.chapter)) {
+    throw new Usage(`no chapter '${options.chapter}': give a number such as 02 or a folder name; there are cases for ${have}`);
+  }
   const matches = files.filter((name) => name.startsWith(options.chapter));
-  if (options.chapter.length < 2 || matches.length !== 1) {
-    throw new Usage(`no cases for chapter '${options.chapter}'; there are cases for ${files.map((f) => f.replace(/\.json$/, "")).join(", ")}`);
-  }
-  const file = path.join(CASES_DIR, matches[0]);
-  const cases = JSON.parse(fs.readFileSync(file, "utf8"));
-  const count = cases.functions.reduce((sum, entry) => sum + entry.cases.length, 0);
-  const verdicts = await runAll(file, options, count);
-  console.log(`${cases.chapter}: ${path.basename(options.module)}, the book's functions one by one`);
-  let index = 0;
+  if (matches.length !== 1) throw new Usage(`no cases for chapter '${options.chapter}'; there are cases for ${have}`);
+  const cases = JSON.parse(fs.readFileSync(path.join(CASES_DIR, matches[0]), "utf8"));
+  const session = new Session(options, cases.functions.map((entry) => entry.function));
+  await session.start();
+  const lines = [`${cases.chapter}: ${path.basename(options.module)}, the book's functions one by one`];
   let failed = false;
-  for (const entry of cases.functions) {
-    const mine = entry.cases.map((kase, i) => ({ kase, number: i + 1, ...verdicts[index++] }));
-    const name = entry.function.padEnd(22);
-    if (!mine.every((each) => each.written)) {
-      console.log(`  ${name} not written yet (${mine.length} cases)`);
-      continue;
+  try {
+    for (const entry of cases.functions) {
+      const name = entry.function.padEnd(22);
+      if (!session.written.has(entry.function)) {
+        lines.push(`  ${name} not written yet (${entry.cases.length} cases)`);
+        continue;
+      }
+      const failures = [];
+      for (const [i, kase] of entry.cases.entries()) {
+        const problem = verdict(await session.run(entry, kase), kase, entry.returns);
+        if (problem) failures.push({ kase, number: i + 1, problem });
+      }
+      if (failures.length === 0) {
+        lines.push(`  ${name} passed (${entry.cases.length} cases)`);
+        continue;
+      }
+      failed = true;
+      lines.push(`  ${name} FAILED ${failures.length} of ${entry.cases.length} cases`);
+      for (const { kase, number: n, problem } of failures) {
+        lines.push(`    case ${n} of ${matches[0]}: ${kase.catches}`);
+        lines.push(`      ${entry.call} with ${JSON.stringify({ ...(kase.given ?? {}), ...(kase.args ?? { calls: kase.calls }) })}`);
+        lines.push(`      ${problem}`);
+      }
+      const note = globalsNote(failures);
+      if (note) lines.push(note);
     }
-    const failures = mine.filter((each) => each.problem);
-    if (failures.length === 0) {
-      console.log(`  ${name} passed (${mine.length} cases)`);
-      continue;
-    }
-    failed = true;
-    console.log(`  ${name} FAILED ${failures.length} of ${mine.length} cases`);
-    for (const { kase, number: n, problem } of failures) {
-      console.log(`    case ${n} of ${matches[0]}: ${kase.catches}`);
-      console.log(`      ${entry.call} with ${JSON.stringify({ ...(kase.given ?? {}), ...(kase.args ?? { calls: kase.calls }) })}`);
-      console.log(`      ${problem}`);
-    }
+  } finally {
+    session.close();
   }
+  console.log(lines.join("\n"));
   return failed ? 1 : 0;
 }
 
-if (isMainThread) {
+if (process.argv[2] === "--worker" && process.send) {
+  work(process.argv[3], process.argv[4]);
+} else {
   main().then((status) => { process.exitCode = status; }, (error) => {
     if (error instanceof Usage) {
       console.error(`check-functions.js: error: ${error.message}`);
@@ -421,6 +543,4 @@ if (isMainThread) {
       process.exitCode = 2;
     }
   });
-} else {
-  work();
 }

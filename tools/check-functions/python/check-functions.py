@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks a Python chapter of "Computer Graphics from Scratch" one book function at a time.
 
-    check-functions.py CHAPTER YOUR_MODULE.py [--adapter YOUR_ADAPTER.py]
+    check-functions.py CHAPTER YOUR_MODULE.py [--adapter YOUR_ADAPTER.py] [--time-limit S]
+    check-functions.py --adapter-template
 
 CHAPTER is a chapter's number or folder name (02, 02-basic-rays). For every book
 function of the chapter that has cases in tests/cases/CHAPTER.json (the cases our C++
@@ -11,15 +12,21 @@ what yours returned and the mistake the case catches) or is not written yet.
 
 The book's data reach your code as the default adapter below makes them: vectors as
 named tuples (x, y, z), points as (x, y, h), colours as tuples, 4x4 matrices as tuples
-of rows, textures as texture[i][j] (column i, row j), spheres, lights, planes, models
-and transforms as objects with the book's fields (sphere.center, light.type == "point",
-plane.normal, plane.D, model.triangles[k].v, transform.scale), and the book's globals
-(Cw, Ch, Vw, Vh, d, scene, BACKGROUND_COLOR) set on your module before each case. An
-adapter file of yours may define any of the functions of DefaultAdapter (same names, as
-plain functions) to build your own types instead (docs/students.md has an example).
+of rows, textures as texture[i][j] (column i, row j), spheres, lights, planes, models,
+transforms and scenes as records with the book's fields, read either way
+(sphere.radius or sphere["radius"], light.type == "point", plane.normal, plane.D,
+model.triangles[k].v, transform.scale), and the book's globals (Cw, Ch, Vw, Vh, d,
+scene, BACKGROUND_COLOR) set on your module before each case. An adapter file of yours
+may define any of the functions of DefaultAdapter (same names, as plain functions) to
+build your own types or set your own globals instead; --adapter-template prints one to
+fill in (docs/students.md has an example).
 
-Exit status: 0 every case of every written function passed, 1 a case failed or your
-module does not load, 2 the command line is wrong. Nothing is written anywhere.
+Your code runs in a process of its own, which this one judges from outside: it is sent
+each case's inputs and reports what your function returned; the verdict, against the
+expected values it never sees, is made here. A case that runs past the time limit, or a
+process that ends or says nothing more, fails, and a new process goes on with the next
+case. Exit status: 0 every case of every written function passed, 1 a case failed or
+your module does not load, 2 the command line is wrong. Nothing is written anywhere.
 """
 
 import argparse
@@ -28,8 +35,11 @@ import importlib.util
 import json
 import math
 import os
-import signal
+import re
+import select
+import subprocess
 import sys
+import time
 import traceback
 import types
 from pathlib import Path
@@ -45,10 +55,6 @@ class Usage(Exception):
 
 class LoadError(Exception):
     """The student's module or adapter does not load: one line, exit status 1."""
-
-
-class TimeLimit(Exception):
-    pass
 
 
 def number(value):
@@ -108,6 +114,42 @@ class Canvas:
         return [[x, y, *self.pixels[(x, y)]] for x, y in sorted(self.pixels)]
 
 
+class Record(types.SimpleNamespace):
+    """One of the book's records (a sphere, a light, a scene...): its fields read as
+    attributes or as a dict's keys, sphere.radius or sphere["radius"], as a chapter written
+    from the book in plain Python may read them."""
+
+    def __getitem__(self, name):
+        try:
+            return getattr(self, name)
+        except AttributeError:
+            raise KeyError(name) from None
+
+    def __setitem__(self, name, value):
+        setattr(self, name, value)
+
+    def __contains__(self, name):
+        return hasattr(self, name)
+
+    def __iter__(self):
+        return iter(vars(self))
+
+    def __len__(self):
+        return len(vars(self))
+
+    def get(self, name, default=None):
+        return getattr(self, name, default)
+
+    def keys(self):
+        return vars(self).keys()
+
+    def values(self):
+        return vars(self).values()
+
+    def items(self):
+        return vars(self).items()
+
+
 class Texture:
     """texture[i][j]: the texel in column i, row j, as the book indexes a texture."""
 
@@ -145,7 +187,7 @@ class DefaultAdapter:
 
     @classmethod
     def plane(cls, value):
-        return types.SimpleNamespace(normal=cls.vector(value["normal"]), D=number(value["D"]))
+        return Record(normal=cls.vector(value["normal"]), D=number(value["D"]))
 
     @staticmethod
     def booleans(value):
@@ -154,17 +196,17 @@ class DefaultAdapter:
     @classmethod
     def tangent_basis(cls, value):
         """A triangle's tangent T and bitangent B (chapter 15's normal mapping)."""
-        return types.SimpleNamespace(T=cls.vector(value["T"]), B=cls.vector(value["B"]))
+        return Record(T=cls.vector(value["T"]), B=cls.vector(value["B"]))
 
     @classmethod
     def triangle(cls, value):
         """A triangle of a model: v, three indices into its vertex list, and color."""
-        return types.SimpleNamespace(v=list(value["v"]), color=cls.color(value["color"]))
+        return Record(v=list(value["v"]), color=cls.color(value["color"]))
 
     @classmethod
     def model(cls, value):
         """A model: its vertices and its triangles."""
-        return types.SimpleNamespace(vertices=cls.vectors(value["vertices"]),
+        return Record(vertices=cls.vectors(value["vertices"]),
                                      triangles=[cls.triangle(each) for each in value["triangles"]])
 
     @classmethod
@@ -175,27 +217,27 @@ class DefaultAdapter:
 
     @classmethod
     def transform(cls, value):
-        return types.SimpleNamespace(
+        return Record(
             scale=number(value["scale"]), rotation=cls.matrix(value["rotation"]),
             translation=cls.vector(value["translation"]))
 
     @classmethod
     def sphere(cls, value):
-        return types.SimpleNamespace(
+        return Record(
             center=cls.vector(value["center"]), radius=number(value["radius"]),
             color=cls.color(value["color"]), specular=number(value.get("specular", -1)),
             reflective=number(value.get("reflective", 0)))
 
     @classmethod
     def light(cls, value):
-        return types.SimpleNamespace(
+        return Record(
             type=value["type"], intensity=number(value["intensity"]),
             position=cls.vector(value.get("position", [0, 0, 0])),
             direction=cls.vector(value.get("direction", [0, 0, 0])))
 
     @classmethod
     def scene(cls, value):
-        return types.SimpleNamespace(
+        return Record(
             spheres=[cls.sphere(each) for each in value.get("spheres", [])],
             lights=[cls.light(each) for each in value.get("lights", [])],
             background_color=cls.color(value.get("background_color", [255, 255, 255])))
@@ -219,7 +261,7 @@ class DefaultAdapter:
             width, height = given["canvas"]["width"], given["canvas"]["height"]
             module.depth_buffer = [[0] * height for _ in range(width)]  # [x][y], x, y >= 0
         if "camera" in given:  # chapter 5: its rotation a 3x3 matrix, row by row
-            module.camera = types.SimpleNamespace(
+            module.camera = Record(
                 position=cls.vector(given["camera"]["position"]),
                 rotation=tuple(tuple(numbers(row)) for row in given["camera"]["rotation"]))
 
@@ -276,24 +318,18 @@ class DefaultAdapter:
 
 
 def load(path, what):
-    """Your module (or adapter), loaded from its file; its folder joins the import path."""
+    """Your module (or adapter), loaded from its file; its folder joins the import path.
+    Runs in the worker process only."""
     path = Path(path)
-    if not path.is_file():
-        raise Usage(f"{path}: no such file")
     spec = importlib.util.spec_from_file_location(path.stem, path)
     if spec is None or spec.loader is None:
-        raise Usage(f"{path}: not a Python file")
+        raise LoadError(f"{what} {path} does not load: not a Python file")
     module = importlib.util.module_from_spec(spec)
     sys.path.insert(0, str(path.resolve().parent))
-    signal.setitimer(signal.ITIMER_REAL, 60)
     try:
         spec.loader.exec_module(module)
-    except TimeLimit:
-        raise LoadError(f"{what} {path} does not load: still running after 60 s") from None
     except BaseException as error:  # whatever their file does, one line
         raise LoadError(f"{what} {path} does not load: {one_line(error)}") from None
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
     return module
 
 
@@ -323,10 +359,6 @@ def convert(adapter, kind, value):
     if kind == "number":
         return number(value)
     return getattr(adapter, kind)(value)
-
-
-def on_alarm(signum, frame):
-    raise TimeLimit()
 
 
 def flattened(value):
@@ -360,8 +392,14 @@ def shown(values):
     return "[" + ", ".join(f"{value:.10g}" for value in values) + "]"
 
 
-def run_case(function, case, parameters, returns, adapter, module, time_limit):
-    """None when the case passes, else what went wrong, in lines."""
+# The worker: the process your code runs in. It loads your module (and adapter), says which
+# of the book functions it is asked about your module has, then runs each case it is sent
+# and reports what your function returned (or drew, or raised), never a verdict: it is
+# sent a case's inputs only, never what is expected.
+
+def run_case(function, case, parameters, returns, adapter, module):
+    """What your function made of one case, for the checker to judge: {"values": [...]},
+    {"pixels": [...]} or {"problem": [lines]}."""
     given = decoded(case.get("given", {}))
     canvas = None
     if returns == "pixels":  # what the function draws, through the checker's PutPixel
@@ -373,27 +411,153 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
         calls = [[convert(adapter, kind, decoded(call[name])) for name, kind in parameters]
                  for call in case.get("calls", [case.get("args")])]
     except BaseException as error:
-        return [f"your adapter failed to build the inputs: {one_line(error)}"]
-    signal.setitimer(signal.ITIMER_REAL, time_limit)
+        return {"problem": [f"your adapter failed to build the inputs: {one_line(error)}"]}
     try:
         for args in calls:
             value = function(*args)
-    except TimeLimit:
-        return [f"did not return within {time_limit:g} s"]
     except BaseException as error:
-        return [f"raised {one_line(error)}"]
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
+        return {"problem": [f"raised {one_line(error)}"]}
     if canvas:
-        return pixel_differences(canvas.drawn(), case["expected"])
+        return {"pixels": canvas.drawn()}
     if value is None and returns == "triangles":  # CullBackFaces changes its object
         value = args[0]
     # The case's globals, and the arguments as your function was given them (after it ran).
     given = dict(decoded(case.get("given", {})), arguments=dict(zip((n for n, _ in parameters), args)))
     try:
-        actual = adapter.result(returns, value, given)
+        values = [float(each) for each in adapter.result(returns, value, given)]
+        return {"values": values}
     except BaseException:
-        return [f"returned {value!r}, not a {returns}"]
+        try:
+            shown_value = repr(value)[:200]
+        except BaseException:
+            shown_value = f"a {type(value).__name__}"
+        return {"problem": [f"returned {shown_value}, not a {returns}"]}
+
+
+def worker(module_path, adapter_path, requests_fd, replies_fd):
+    replies = os.fdopen(replies_fd, "w", buffering=1)
+    requests = os.fdopen(requests_fd, "r")
+
+    def reply(message):
+        replies.write(json.dumps(message) + "\n")
+        replies.flush()
+
+    try:
+        adapter = adapted(load(adapter_path, "your adapter") if adapter_path else None)
+        module = load(module_path, "your module")
+    except LoadError as error:
+        reply({"load_error": str(error)})
+        return
+    names = json.loads(requests.readline())["functions"]
+    reply({"loaded": [name for name in names if callable(getattr(module, name, None))]})
+    for line in requests:
+        request = json.loads(line)
+        result = run_case(getattr(module, request["function"]), request["case"],
+                          request["parameters"], request["returns"], adapter, module)
+        result["id"] = request["id"]
+        try:
+            reply(result)
+        except (TypeError, ValueError):
+            reply({"id": request["id"], "problem": ["returned something that is not numbers"]})
+
+
+# The checker's side: a worker process at a time, judged by what it reports.
+
+LOAD_LIMIT = 60  # seconds a module may take to load, apart from its cases' time limit
+
+
+class Worker:
+    """A process running the worker above on your module."""
+
+    def __init__(self, options):
+        to_child, self.requests = os.pipe()
+        self.replies, from_child = os.pipe()
+        command = [sys.executable, "-B", str(Path(__file__).resolve()), "--worker",
+                   options.module, options.adapter or "", str(to_child), str(from_child)]
+        # What your code prints is not shown: it would break the report's lines.
+        self.process = subprocess.Popen(command, pass_fds=(to_child, from_child),
+                                        stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                        stderr=subprocess.DEVNULL)
+        os.close(to_child)
+        os.close(from_child)
+        self.buffer = b""
+
+    def send(self, message):
+        os.write(self.requests, (json.dumps(message) + "\n").encode())
+
+    def receive(self, limit):
+        """The next message; "timeout" after `limit` seconds; "ended" if the process is
+        gone (or said something that is not a message)."""
+        deadline = time.monotonic() + limit
+        while b"\n" not in self.buffer:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                return "timeout"
+            ready, _, _ = select.select([self.replies], [], [], left)
+            if not ready:
+                return "timeout"
+            chunk = os.read(self.replies, 65536)
+            if not chunk:
+                return "ended"
+            self.buffer += chunk
+        line, self.buffer = self.buffer.split(b"\n", 1)
+        try:
+            message = json.loads(line)
+        except ValueError:
+            return "ended"
+        return message if isinstance(message, dict) else "ended"
+
+    def stop(self):
+        """Kills the process (nothing it does can keep it alive); its exit status."""
+        self.process.kill()
+        status = self.process.wait()
+        for fd in (self.requests, self.replies):
+            os.close(fd)
+        return status
+
+    def exit_status(self):
+        """How the process ended, once it has: its status, or -signal."""
+        try:
+            status = self.process.wait(timeout=2)
+        except subprocess.TimeoutExpired:
+            status = self.stop()
+            return status
+        for fd in (self.requests, self.replies):
+            os.close(fd)
+        return status
+
+
+def start_worker(options, names):
+    """A worker with your module loaded, and which of the book functions `names` it has;
+    LoadError if it does not load."""
+    worker_ = Worker(options)
+    try:
+        worker_.send({"functions": names})
+    except OSError:
+        pass  # it ended already: said below
+    message = worker_.receive(LOAD_LIMIT)
+    if message == "timeout":
+        worker_.stop()
+        raise LoadError(f"your module {options.module} does not load: still running after {LOAD_LIMIT} s")
+    if message == "ended" or "loaded" not in message:
+        if isinstance(message, dict) and "load_error" in message:
+            worker_.exit_status()
+            raise LoadError(str(message["load_error"]))
+        status = worker_.exit_status()
+        raise LoadError(f"your module {options.module} does not load: it ended the process "
+                        f"(exit status {status}) while loading")
+    return worker_, set(message["loaded"])
+
+
+def verdict(reply, case, returns):
+    """None when the case passes, else what went wrong, in lines."""
+    if "problem" in reply:
+        return [str(line) for line in reply["problem"]]
+    if returns == "pixels":
+        return pixel_differences(reply.get("pixels", []), case["expected"])
+    actual = reply.get("values")
+    if not isinstance(actual, list) or not all(isinstance(each, (int, float)) for each in actual):
+        return ["returned something that is not numbers"]
     expected = flattened(decoded(case["expected"]))
     if case.get("compare") == "truncated":  # as a canvas truncates pixel coordinates
         actual = [math.trunc(each) if math.isfinite(each) else each for each in actual]
@@ -405,18 +569,72 @@ def run_case(function, case, parameters, returns, adapter, module, time_limit):
             f", expected {shown(expected)}" + (f" (within {tolerance:g})" if tolerance else "")]
 
 
-def check_function(entry, adapter, module, file, time_limit):
+# The globals each kind of a case's "given" sets on your module (DefaultAdapter.setup).
+GLOBALS_SET = {"canvas": "Cw, Ch", "viewport": "Vw, Vh, d", "scene": "scene, BACKGROUND_COLOR",
+               "depth_buffer": "depth_buffer", "camera": "camera"}
+
+
+def globals_note(failures):
+    """The line that says which globals the checker set, when a failed case set any."""
+    kinds = [kind for kind in GLOBALS_SET if any(kind in case.get("given", {}) for _, case, _ in failures)]
+    if not kinds:
+        return None
+    names = ", ".join(GLOBALS_SET[kind] for kind in kinds)
+    return (f"    note: the checker set {names} on your module before these cases; if your "
+            f"module keeps its own, give an adapter (docs/students.md, \"How the book's data "
+            f"reach your code\"; --adapter-template prints one to fill in)")
+
+
+class Session:
+    """Runs the cases on a worker at a time, starting a new one after a case that did not
+    come back."""
+
+    def __init__(self, options, names):
+        self.options, self.names = options, names
+        self.worker, self.written = start_worker(options, names)
+        self.next_id = 0
+
+    def run(self, entry, case):
+        if self.worker is None:
+            try:
+                self.worker, _ = start_worker(self.options, self.names)
+            except LoadError as error:
+                return [f"a new process for the next cases could not load your module: {error}"]
+        self.next_id += 1
+        inputs = {key: case[key] for key in ("given", "args", "calls") if key in case}
+        try:
+            self.worker.send({"id": self.next_id, "function": entry["function"], "case": inputs,
+                              "parameters": entry["parameters"], "returns": entry["returns"]})
+            reply = self.worker.receive(self.options.time_limit)
+        except OSError:
+            reply = "ended"
+        if reply == "timeout":
+            self.worker.stop()
+            self.worker = None
+            return [f"did not return within {self.options.time_limit:g} s"]
+        if reply == "ended" or reply.get("id") != self.next_id:
+            status = self.worker.stop() if reply != "ended" else self.worker.exit_status()
+            self.worker = None
+            return [f"ended the process it ran in (exit status {status}) instead of returning"
+                    if reply == "ended" else "said something else than what it returned"]
+        return reply
+
+    def close(self):
+        if self.worker is not None:
+            self.worker.stop()
+
+
+def check_function(session, entry, file):
     """Prints the verdict of one book function; whether it failed."""
     name = entry["function"]
-    function = getattr(module, name, None)
     cases = entry["cases"]
-    if not callable(function):
+    if name not in session.written:
         print(f"  {name:22} not written yet ({len(cases)} cases)")
         return False
     failures = []
     for number_, case in enumerate(cases, 1):
-        problem = run_case(function, case, entry["parameters"], entry["returns"], adapter, module,
-                           time_limit)
+        reply = session.run(entry, case)
+        problem = reply if isinstance(reply, list) else verdict(reply, case, entry["returns"])
         if problem:
             failures.append((number_, case, problem))
     if not failures:
@@ -429,10 +647,53 @@ def check_function(entry, adapter, module, file, time_limit):
         print(f"      {entry['call']} with {json.dumps(inputs)}")
         for line in problem:
             print(f"      {line}")
+    note = globals_note(failures)
+    if note:
+        print(note)
     return True
 
 
+ADAPTER_TEMPLATE = """\
+# An adapter for check-functions.py (docs/students.md, "How the book's data reach your
+# code"): give it with --adapter. Define only what your module needs; each function here
+# takes the place of the checker's own of the same name.
+
+
+def setup(module, given):
+    \"\"\"Called before each case, with what the case sets as the book's globals:
+        given["canvas"]   {"width": ..., "height": ..., and for drawing functions
+                           "PutPixel": the checker's PutPixel(x, y, color)}
+        given["viewport"] {"width": ..., "height": ..., "d": ...}
+        given["scene"]    {"spheres": [...], "lights": [...], "background_color": [r, g, b]}
+    Put them where your module reads them. This one sets the book's names, as the checker
+    does; rename them to yours. (Chapter 12's depth_buffer and chapter 5's camera: see
+    DefaultAdapter.setup in check-functions.py.)\"\"\"
+    if "canvas" in given:
+        module.Cw = given["canvas"]["width"]
+        module.Ch = given["canvas"]["height"]
+        if "PutPixel" in given["canvas"]:
+            module.PutPixel = given["canvas"]["PutPixel"]
+    if "viewport" in given:
+        module.Vw = given["viewport"]["width"]
+        module.Vh = given["viewport"]["height"]
+        module.d = given["viewport"]["d"]
+    if "scene" in given:
+        module.scene = given["scene"]  # a dict: "spheres", "lights", "background_color"
+        module.BACKGROUND_COLOR = given["scene"].get("background_color", [255, 255, 255])
+
+
+# Your own types, if your functions take them (each gets the case's JSON value):
+# def vector(value):
+#     return MyVector(*value)
+# def sphere(value):
+#     return MySphere(center=value["center"], radius=value["radius"], color=value["color"])
+"""
+
+
 def main(argv):
+    if argv == ["--adapter-template"]:
+        print(ADAPTER_TEMPLATE, end="")
+        return 0
     parser = argparse.ArgumentParser(prog="check-functions.py", description=__doc__.split("\n")[0])
     parser.add_argument("chapter", help="the chapter: its number (02) or folder name")
     parser.add_argument("module", help="your chapter's Python file")
@@ -442,21 +703,30 @@ def main(argv):
     options = parser.parse_args(argv)
     if not 0 < options.time_limit <= 3600:
         raise Usage(f"--time-limit {options.time_limit:g}: give 0 to 3600 seconds")
+    have = ", ".join(path.stem for path in sorted(CASES_DIR.glob("*.json")))
+    if not re.fullmatch(r"[0-9]{2}(-[a-z0-9-]+)?", options.chapter):
+        raise Usage(f"no chapter '{options.chapter}': give a number such as 02 "
+                    f"or a folder name; there are cases for {have}")
     matches = sorted(CASES_DIR.glob(f"{options.chapter}*.json"))
-    if len(options.chapter) < 2 or len(matches) != 1:
-        have = ", ".join(path.stem for path in sorted(CASES_DIR.glob("*.json")))
+    if len(matches) != 1:
         raise Usage(f"no cases for chapter '{options.chapter}'; there are cases for {have}")
+    for path in (options.module, options.adapter):
+        if path is not None and not Path(path).is_file():
+            raise Usage(f"{path}: no such file")
     cases = json.loads(matches[0].read_text())
-    signal.signal(signal.SIGALRM, on_alarm)
-    adapter = adapted(load(options.adapter, "your adapter") if options.adapter else None)
-    module = load(options.module, "your module")
-    print(f"{cases['chapter']}: {Path(options.module).name}, the book's functions one by one")
-    failed = [check_function(entry, adapter, module, matches[0].name, options.time_limit)
-              for entry in cases["functions"]]
+    session = Session(options, [entry["function"] for entry in cases["functions"]])
+    try:
+        print(f"{cases['chapter']}: {Path(options.module).name}, the book's functions one by one")
+        failed = [check_function(session, entry, matches[0].name) for entry in cases["functions"]]
+    finally:
+        session.close()
     return 1 if any(failed) else 0
 
 
 if __name__ == "__main__":
+    if len(sys.argv) == 6 and sys.argv[1] == "--worker":
+        worker(sys.argv[2], sys.argv[3], int(sys.argv[4]), int(sys.argv[5]))
+        sys.exit(0)
     try:
         sys.exit(main(sys.argv[1:]))
     except Usage as error:
