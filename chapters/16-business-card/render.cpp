@@ -48,8 +48,11 @@ class SobolPoints {
                                   std::to_string(samples));
     }
     for (std::uint32_t& bits : scramble_) {
-      bits = static_cast<std::uint32_t>(random.Rand() * 65536.0) << 16 |
-             static_cast<std::uint32_t>(random.Rand() * 65536.0);
+      // Two draws, one statement each: the operands of | may be evaluated in either
+      // order, and the bits would then depend on the compiler.
+      const auto high = static_cast<std::uint32_t>(random.Rand() * 65536.0);
+      const auto low = static_cast<std::uint32_t>(random.Rand() * 65536.0);
+      bits = high << 16 | low;
     }
   }
 

@@ -257,7 +257,7 @@ struct TestRay {
 TestRay Draw(int kind, const Scene& scene, const Box& region, Random& random) {
   const auto inside = [&] {
     return region.min +
-           (region.max - region.min) * Vec3(random.Next(), random.Next(), random.Next());
+           (region.max - region.min) * Vec3{random.Next(), random.Next(), random.Next()};
   };
   const auto object = [&]() -> const Object& {
     return *scene.objects[static_cast<std::size_t>(random.Next() *
