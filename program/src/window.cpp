@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "program/camera_controls.h"
 #include "program/error.h"
 #include "program/image_files.h"
 
@@ -92,43 +93,32 @@ Shown Draw(const Figure& figure, int width, int height, const View& view) {
   return shown;
 }
 
-// The view after a key that moves or turns the camera; nothing for other keys.
-std::optional<View> Moved(View view, SDL_Keycode key) {
+// What a key does to the camera; nothing for keys that do not move it.
+std::optional<CameraKey> CameraKeyOf(SDL_Keycode key) {
   switch (key) {
     case SDLK_UP:
-      view.move.z += kWindowStep;
-      break;
+      return CameraKey::kForward;
     case SDLK_DOWN:
-      view.move.z -= kWindowStep;
-      break;
+      return CameraKey::kBack;
     case SDLK_d:
-      view.move.x += kWindowStep;
-      break;
+      return CameraKey::kRight;
     case SDLK_a:
-      view.move.x -= kWindowStep;
-      break;
+      return CameraKey::kLeft;
     case SDLK_PAGEUP:
-      view.move.y += kWindowStep;
-      break;
+      return CameraKey::kUp;
     case SDLK_PAGEDOWN:
-      view.move.y -= kWindowStep;
-      break;
+      return CameraKey::kDown;
     case SDLK_q:
-      view.yaw += kWindowTurn;
-      break;
+      return CameraKey::kTurnLeft;
     case SDLK_e:
-      view.yaw -= kWindowTurn;
-      break;
+      return CameraKey::kTurnRight;
     case SDLK_HOME:
-      view.pitch += kWindowTurn;
-      break;
+      return CameraKey::kLookUp;
     case SDLK_END:
-      view.pitch -= kWindowTurn;
-      break;
+      return CameraKey::kLookDown;
     default:
       return std::nullopt;
   }
-  return view;
 }
 
 void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown,
@@ -212,10 +202,10 @@ class Session {
         figures_(figures),
         width_(width),
         height_(height),
-        // While the camera moves, frames are drawn at half the size (even, as canvases
-        // are) and stretched; the full one follows after kWindowSettle ms without a key.
-        preview_width_(std::max(2, width / 4 * 2)),
-        preview_height_(std::max(2, height / 4 * 2)),
+        // While the camera moves, frames are drawn at half the size and stretched; the
+        // full one follows after kSettleMilliseconds without a key.
+        preview_width_(PreviewSide(width)),
+        preview_height_(PreviewSide(height)),
         start_view_(view),
         view_(view) {
     Open(sdl_, chapter, width, height, preview_width_, preview_height_);
@@ -236,8 +226,7 @@ class Session {
   // Dragging the mouse: the camera turns with it, `right` and `down` pixels.
   void Drag(int right, int down) {
     if (figures_[index_]->draw_from && (right != 0 || down != 0)) {
-      view_.yaw -= right * kWindowMouseTurn;
-      view_.pitch -= down * kWindowMouseTurn;
+      view_ = Dragged(view_, right, down);
       Show(index_, true);
     }
   }
@@ -245,9 +234,9 @@ class Session {
   // What a key does; false when it closes the window.
   bool Press(SDL_Keycode key, const std::filesystem::path& output, const std::string& format) {
     const std::size_t count = figures_.size();
-    if (const std::optional<View> moved = Moved(view_, key)) {
+    if (const std::optional<CameraKey> camera_key = CameraKeyOf(key)) {
       if (figures_[index_]->draw_from) {
-        view_ = *moved;
+        view_ = Moved(view_, *camera_key);
         Show(index_, true);
       }
       return true;
@@ -304,7 +293,7 @@ void ShowFigures(const std::string& chapter, const std::vector<const Figure*>& f
   session.Show(0);
   SDL_Event event;
   while (true) {
-    if (session.Preview() && SDL_WaitEventTimeout(&event, kWindowSettle) == 0) {
+    if (session.Preview() && SDL_WaitEventTimeout(&event, kSettleMilliseconds) == 0) {
       session.Show(session.Index());  // the camera has stopped: the full picture
       continue;
     }

@@ -17,15 +17,7 @@ inline constexpr char kWindowKeys[] =
     "A / D left / right, PageUp / PageDown up / down, Q / E or dragging the mouse turn "
     "left / right, Home / End or dragging the mouse look up / down";
 
-// How far one key press moves the camera (scene units) or turns it (degrees).
-inline constexpr double kWindowStep = 0.25;
-inline constexpr double kWindowTurn = 5;
-// How far dragging the mouse (left button held) turns it: degrees per pixel.
-inline constexpr double kWindowMouseTurn = 0.25;
-// While the camera moves, frames are drawn at half size; the full one once no key has
-// come for this many milliseconds.
-inline constexpr int kWindowSettle = 150;
-
+// The keys move the camera as program/camera_controls.h says.
 // Shows the figures at width x height in a window titled with the chapter, the figure,
 // the last drawing's time and, once moved, the view. A figure with a camera starts from
 // `view` and moves with the keys, each step drawn by the chapter's code. S writes the
