@@ -1,0 +1,135 @@
+// A chapter's figures for its web page (scripts/site): compiled to WebAssembly with the
+// chapter's own code, in place of main.cpp. The page asks for a figure by its index and
+// a size, and copies the pixels it gets (RGBA, as ImageData holds them) into its
+// canvas; the camera of a figure that has one moves as in the window
+// (program/camera_controls.h). A request that cannot be met returns 0 and leaves one
+// line in LastError() for the page to show.
+#include <emscripten.h>
+
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "program/camera_controls.h"
+#include "program/figure.h"
+#include "scenes.h"
+#if __has_include("options.h")
+#include "options.h"
+#endif
+
+namespace {
+
+// The figures, made once with the settings a command line without options gives.
+const std::vector<cgfs::Figure>& ChapterFigures() {
+#if __has_include("options.h")
+  static const std::vector<cgfs::Figure> figures = Figures(ChapterSettings{});
+#else
+  static const std::vector<cgfs::Figure> figures = Figures();
+#endif
+  return figures;
+}
+
+cgfs::View view;                  // the camera's view, for the figures that have one
+std::vector<std::uint8_t> pixels;  // the last figure drawn, RGBA
+std::string text;                  // what the last call that returns text returned
+std::string last_error;
+
+const cgfs::Figure* FigureAt(int index) {
+  const auto& figures = ChapterFigures();
+  if (index < 0 || index >= static_cast<int>(figures.size())) {
+    last_error = "there is no figure " + std::to_string(index) + " (this chapter has " +
+                 std::to_string(figures.size()) + ")";
+    return nullptr;
+  }
+  return &figures[static_cast<std::size_t>(index)];
+}
+
+const char* Text(std::string value) {
+  text = std::move(value);
+  return text.c_str();
+}
+
+}  // namespace
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE const char* ChapterName() { return CGFS_CHAPTER; }
+EMSCRIPTEN_KEEPALIVE const char* ChapterDescription() { return kChapterDescription; }
+EMSCRIPTEN_KEEPALIVE int FigureCount() { return static_cast<int>(ChapterFigures().size()); }
+
+// The figure's name, its caption, and whether it has a camera to move (1) or not (0);
+// an index out of range gives "" and -1.
+EMSCRIPTEN_KEEPALIVE const char* FigureName(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  return Text(figure != nullptr ? figure->name : "");
+}
+EMSCRIPTEN_KEEPALIVE const char* FigureCaption(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  return Text(figure != nullptr ? figure->caption : "");
+}
+EMSCRIPTEN_KEEPALIVE int FigureHasCamera(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  return figure == nullptr ? -1 : figure->draw_from ? 1 : 0;
+}
+
+// Draws figure `index` at width x height, from the camera's view where the figure has a
+// camera; the pixels, width x height x 4 bytes, then stand at Pixels(). 1, or 0 with
+// LastError() saying why.
+EMSCRIPTEN_KEEPALIVE int DrawFigure(int index, int width, int height) {
+  const cgfs::Figure* figure = FigureAt(index);
+  if (figure == nullptr) {
+    return 0;
+  }
+  constexpr int kLargest = 4096;
+  if (width < 2 || height < 2 || width > kLargest || height > kLargest || width % 2 != 0 ||
+      height % 2 != 0) {
+    last_error = "a figure is drawn at an even size from 2x2 to 4096x4096, not " +
+                 std::to_string(width) + "x" + std::to_string(height);
+    return 0;
+  }
+  try {
+    const cgfs::Canvas canvas =
+        cgfs::RenderFigure(*figure, width, height, figure->draw_from ? view : cgfs::View{});
+    const auto& rgb = canvas.GetImage().Bytes();
+    pixels.resize(rgb.size() / 3 * 4);
+    for (std::size_t from = 0, to = 0; from < rgb.size(); from += 3, to += 4) {
+      pixels[to] = rgb[from];
+      pixels[to + 1] = rgb[from + 1];
+      pixels[to + 2] = rgb[from + 2];
+      pixels[to + 3] = 255;
+    }
+    return 1;
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return 0;
+  }
+}
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* Pixels() { return pixels.data(); }
+EMSCRIPTEN_KEEPALIVE const char* LastError() { return last_error.c_str(); }
+
+// The camera: a key (a cgfs::CameraKey, 0 to 9), a drag, back to the chapter's view,
+// or a view as --view takes it ("x,y,z,yaw,pitch": 1, or 0 with LastError()).
+EMSCRIPTEN_KEEPALIVE void PressCameraKey(int key) {
+  if (key >= 0 && key <= static_cast<int>(cgfs::CameraKey::kLookDown)) {
+    view = cgfs::Moved(view, static_cast<cgfs::CameraKey>(key));
+  }
+}
+EMSCRIPTEN_KEEPALIVE void DragCamera(int right, int down) {
+  view = cgfs::Dragged(view, right, down);
+}
+EMSCRIPTEN_KEEPALIVE void ResetView() { view = cgfs::View{}; }
+EMSCRIPTEN_KEEPALIVE int SetView(const char* value) {
+  try {
+    view = cgfs::ParseView(value);
+    return 1;
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return 0;
+  }
+}
+EMSCRIPTEN_KEEPALIVE const char* ViewText() { return Text(cgfs::FormatView(view)); }
+EMSCRIPTEN_KEEPALIVE int PreviewSide(int side) { return cgfs::PreviewSide(side); }
+EMSCRIPTEN_KEEPALIVE int SettleMilliseconds() { return cgfs::kSettleMilliseconds; }
+
+}  // extern "C"

@@ -1,0 +1,277 @@
+// The site of scripts/site, in headless Chromium, driven through its DevTools protocol:
+//  - every figure of every chapter, drawn through the page's own buttons, equals its
+//    golden image byte for byte (the canvas read back);
+//  - on the pages of chapters 5 and 15, keys and a mouse drag move the camera: the
+//    frame is drawn at half size while it moves, the view shown after three keys is
+//    the one worked by hand, and the full frame after the drag equals what the native
+//    program draws with --view set to the view the page shows;
+//  - a page asked for a figure or a view that does not exist says so and draws the
+//    chapter's first figure; the index draws a picture for every chapter;
+//  - every link of every page leads to a file of the site.
+// With --speed CHAPTER:FIGURE ..., it only times those figures instead: the best of
+// 5 draws on the page, and of 3 runs of the native program on one thread.
+//
+// Usage: node --experimental-websocket check_site.mjs REPO SITE NATIVE_BUILD [--speed ...]
+// Exit status 0 when all passed, 1 when one failed (each failure is one line).
+import {spawn, execFileSync} from 'node:child_process';
+import {createHash} from 'node:crypto';
+import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync} from 'node:fs';
+import {tmpdir} from 'node:os';
+import {join, dirname, resolve} from 'node:path';
+import {ReadPng} from './png.mjs';
+
+const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
+const speedIndex = process.argv.indexOf('--speed');
+const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
+let failures = 0;
+function Fail(line) { console.log(`FAIL: ${line}`); ++failures; }
+
+// Chromium, and one page of it, spoken to over a WebSocket.
+class Browser {
+  static async Open() {
+    const profile = mkdtempSync(join(tmpdir(), 'cgfs-site-'));
+    const binary = ['chromium', 'chromium-browser'].find((name) => {
+      try { execFileSync('sh', ['-c', `command -v ${name}`]); return true; } catch { return false; }
+    });
+    if (!binary) {
+      console.log('check_site: no Chromium to load the pages in: install the Debian package chromium');
+      globalThis.process.exit(2);
+    }
+    const process = spawn(binary, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
+      '--window-size=1400,1000', '--remote-debugging-port=0', `--user-data-dir=${profile}`, 'about:blank'],
+    {stdio: 'ignore'});
+    const portFile = join(profile, 'DevToolsActivePort');
+    for (let i = 0; i < 300 && !existsSync(portFile); ++i) await sleep(100);
+    const [port, path] = readFileSync(portFile, 'utf8').split('\n');
+    const browser = new Browser(process, profile, new WebSocket(`ws://127.0.0.1:${port}${path}`));
+    await new Promise((done) => browser.socket.addEventListener('open', done));
+    const {targetId} = await browser.Send('Target.createTarget', {url: 'about:blank'});
+    browser.session = (await browser.Send('Target.attachToTarget', {targetId, flatten: true})).sessionId;
+    await browser.Send('Page.enable');
+    return browser;
+  }
+
+  constructor(process, profile, socket) {
+    Object.assign(this, {process, profile, socket, next: 1, waiting: new Map(), session: undefined});
+    socket.addEventListener('message', (event) => {
+      const message = JSON.parse(event.data);
+      const waiter = this.waiting.get(message.id);
+      if (waiter) {
+        this.waiting.delete(message.id);
+        message.error ? waiter.reject(new Error(message.error.message)) : waiter.resolve(message.result);
+      }
+    });
+  }
+
+  Send(method, params = {}) {
+    const id = this.next++;
+    this.socket.send(JSON.stringify({id, method, params, sessionId: this.session}));
+    return new Promise((resolve, reject) => this.waiting.set(id, {resolve, reject}));
+  }
+
+  // The value of a JavaScript expression in the page (awaited when it is a promise).
+  async Evaluate(expression) {
+    const {result, exceptionDetails} = await this.Send('Runtime.evaluate',
+        {expression, awaitPromise: true, returnByValue: true});
+    if (exceptionDetails) throw new Error(`${expression}: ${exceptionDetails.exception?.description}`);
+    return result.value;
+  }
+
+  async WaitFor(expression, what, seconds = 60) {
+    for (let waited = 0; waited < seconds * 1000; waited += 50) {
+      if (await this.Evaluate(expression)) return true;
+      await sleep(50);
+    }
+    Fail(`${what}: not within ${seconds} s`);
+    return false;
+  }
+
+  async Open(page) {
+    const url = `file://${site}/${page}`;
+    await this.Send('Page.navigate', {url});
+    return this.WaitFor(`location.href === ${JSON.stringify(url)} && document.readyState === 'complete' && ` +
+                        "(document.getElementById('live')?.dataset.ready === 'yes' || " +
+                        "!document.getElementById('status')?.textContent.startsWith('Loading'))", `${page} loads`);
+  }
+
+  async Key(key) {
+    const named = {ArrowUp: 38, ArrowDown: 40, ArrowLeft: 37, ArrowRight: 39, PageUp: 33, PageDown: 34,
+      Home: 36, End: 35};
+    const code = named[key] ?? key.toUpperCase().charCodeAt(0);
+    const common = {key, windowsVirtualKeyCode: code, code: named[key] ? key : `Key${key.toUpperCase()}`};
+    await this.Send('Input.dispatchKeyEvent', {type: 'keyDown', ...common, text: named[key] ? undefined : key});
+    await this.Send('Input.dispatchKeyEvent', {type: 'keyUp', ...common});
+  }
+
+  async Drag(fromX, fromY, right, down) {
+    const mouse = (type, x, y, buttons) =>
+      this.Send('Input.dispatchMouseEvent', {type, x, y, button: 'left', buttons, clickCount: 1});
+    await mouse('mousePressed', fromX, fromY, 1);
+    for (let step = 1; step <= 4; ++step) {
+      await mouse('mouseMoved', fromX + right * step / 4, fromY + down * step / 4, 1);
+    }
+    await mouse('mouseReleased', fromX + right, fromY + down, 0);
+  }
+
+  async Close() {
+    const exited = new Promise((done) => this.process.once('exit', done));
+    this.process.kill();
+    await exited;
+    rmSync(this.profile, {recursive: true, force: true, maxRetries: 5});
+  }
+}
+
+const kCanvasDigest = `(async () => {
+  const canvas = document.getElementById('canvas');
+  const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', pixels));
+  return [canvas.width, canvas.height, Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')];
+})()`;
+
+function GoldenDigest(path) {
+  const image = ReadPng(path);
+  return [image.width, image.height, createHash('sha256').update(image.rgba).digest('hex')];
+}
+
+const Same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+const Chapters = () => readdirSync(join(repo, 'chapters')).filter((name) => /^\d\d-/.test(name)).sort();
+
+// Clicks figure `index`'s button and waits for its full frame.
+async function ShowFigure(browser, index) {
+  await browser.Evaluate(`(() => { const canvas = document.getElementById('canvas');
+    delete canvas.dataset.drawn; document.querySelectorAll('#figures button')[${index}].click(); })()`);
+  return browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `figure ${index} drawn`);
+}
+
+async function CheckEveryFigure(browser) {
+  let compared = 0;
+  for (const chapter of Chapters()) {
+    if (!await browser.Open(`${chapter}/index.html`)) continue;
+    const names = await browser.Evaluate("Array.from(document.querySelectorAll('#figures button'), (b) => b.textContent)");
+    for (const [index, name] of names.entries()) {
+      await ShowFigure(browser, index);
+      const problem = await browser.Evaluate("document.getElementById('problem').textContent");
+      const golden = join(repo, 'tests', 'golden', chapter, `${name}.png`);
+      if (problem) Fail(`${chapter}/${name}: the page says "${problem}"`);
+      else if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(golden))) {
+        Fail(`${chapter}/${name}: the canvas differs from ${golden}`);
+      }
+      ++compared;
+    }
+  }
+  console.log(`every figure, drawn through the page's buttons, compared with its golden image: ${compared}`);
+}
+
+async function CheckCamera(browser, chapter, figure) {
+  await browser.Open(`${chapter}/index.html?figure=${figure}`);
+  await browser.Evaluate("document.body.focus()");
+  for (const key of ['ArrowUp', 'ArrowUp', 'q']) await browser.Key(key);
+  const drawn = await browser.Evaluate(
+      "new Promise((r) => requestAnimationFrame(() => r(document.getElementById('canvas').dataset.drawn)))");
+  if (drawn !== 'preview') Fail(`${chapter}: the frame while the camera moves is drawn '${drawn}', not at half size`);
+  const walked = await browser.Evaluate("document.getElementById('view').textContent");
+  // Forward a quarter unit twice, turned 5 degrees left once (program/camera_controls.h).
+  if (walked !== '0,0,0.5,5,0') Fail(`${chapter}: after Up, Up, Q the page shows the view ${walked}, not 0,0,0.5,5,0`);
+  const box = await browser.Evaluate("(({x, y, width, height}) => [x, y, width, height])" +
+                                     "(document.getElementById('canvas').getBoundingClientRect())");
+  await browser.Drag(box[0] + box[2] / 2, box[1] + box[3] / 2, 40, -24);
+  await sleep(400);
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the settled frame`);
+  const view = await browser.Evaluate("document.getElementById('view').textContent");
+  if (view === walked) Fail(`${chapter}: dragging the picture did not turn the camera`);
+  const out = mkdtempSync(join(tmpdir(), 'cgfs-view-'));
+  execFileSync(join(native, chapter), ['--figure', figure, '--view', view, '--output', out], {stdio: 'ignore'});
+  const same = Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(out, `${figure}.png`)));
+  rmSync(out, {recursive: true});
+  if (!same) Fail(`${chapter}: the page's frame at view ${view} differs from ${chapter} --view ${view}`);
+  const link = await browser.Evaluate("document.getElementById('view-link').getAttribute('href')");
+  if (link !== `?figure=${figure}&view=${encodeURIComponent(view)}`) Fail(`${chapter}: the view's link is ${link}`);
+  console.log(`${chapter}: keys and a drag walked ${figure} to ${view}; the native program draws the same frame`);
+}
+
+async function CheckBadAddresses(browser) {
+  const cases = [
+    ['02-basic-rays/index.html?figure=fig-9-99', 'This chapter has no figure "fig-9-99"'],
+    ['05-raytracer-extensions/index.html?figure=fig-5-1-camera&view=1,2', 'No view "1,2"'],
+    ['02-basic-rays/index.html?figure=fig-2-11&view=0,0,1,0,0', 'fig-2-11 has no camera to move'],
+  ];
+  for (const [page, said] of cases) {
+    await browser.Open(page);
+    await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${page} draws`);
+    const problem = await browser.Evaluate("document.getElementById('problem').hidden ? '' : " +
+                                           "document.getElementById('problem').textContent");
+    if (!problem.startsWith(said)) Fail(`${page}: the page says "${problem}", not "${said}…"`);
+    else console.log(`${page}: "${problem}"`);
+  }
+}
+
+async function CheckIndex(browser) {
+  await browser.Open('index.html');
+  await browser.WaitFor("document.body.dataset.thumbnails === 'drawn'", 'the index draws its pictures', 120);
+  const blank = await browser.Evaluate(`Array.from(document.querySelectorAll('canvas.thumbnail')).filter((c) => {
+    const p = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    return p.every((v, i) => v === p[i % 4]); }).map((c) => c.dataset.chapter)`);
+  const count = await browser.Evaluate("document.querySelectorAll('canvas.thumbnail').length");
+  if (count !== Chapters().length) Fail(`the index has ${count} pictures for ${Chapters().length} chapters`);
+  if (blank.length) Fail(`the index's pictures of ${blank.join(', ')} are blank`);
+  console.log(`the index drew ${count} pictures`);
+}
+
+// Every href and src of every page of the site leads to a file of the site.
+function CheckLinks() {
+  let links = 0;
+  const pages = readdirSync(site, {recursive: true}).filter((path) => path.endsWith('.html'));
+  for (const page of pages) {
+    const text = readFileSync(join(site, page), 'utf8');
+    for (const [, target] of text.matchAll(/(?:href|src)="([^"#?]+)[^"]*"/g)) {
+      if (/^[a-z]+:/.test(target)) continue;
+      ++links;
+      if (!existsSync(join(dirname(join(site, page)), target.replaceAll('&amp;', '&')))) {
+        Fail(`${page} links to ${target}, which the site does not have`);
+      }
+    }
+  }
+  console.log(`${links} links in ${pages.length} pages, each to a file of the site`);
+}
+
+// Milliseconds of a figure: on its page the best of 5 draws, natively the best of 3 runs
+// on one thread (the time the program prints).
+async function Speed(browser, chapter, figure) {
+  await browser.Open(`${chapter}/index.html?figure=${figure}`);
+  const index = await browser.Evaluate(
+      `Array.from(document.querySelectorAll('#figures button'), (b) => b.textContent).indexOf('${figure}')`);
+  const page = [];
+  for (let i = 0; i < 5; ++i) {
+    await ShowFigure(browser, index);
+    page.push(Number(await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds")));
+  }
+  const threads = ['05', '16', '17'].includes(chapter.slice(0, 2)) ? ['--threads', '1'] : [];
+  const runs = [];
+  for (let i = 0; i < 3; ++i) {
+    const out = mkdtempSync(join(tmpdir(), 'cgfs-speed-'));
+    const printed = execFileSync(join(native, chapter), ['--figure', figure, '--output', out, ...threads]).toString();
+    rmSync(out, {recursive: true});
+    runs.push(Number(/rendered in ([\d.]+) ms/.exec(printed)[1]));
+  }
+  const [inPage, natively] = [Math.min(...page), Math.min(...runs)];
+  console.log(`| ${chapter} | \`${figure}\` | ${natively.toFixed(1)} ms | ${inPage.toFixed(1)} ms | ` +
+              `${(inPage / natively).toFixed(2)} |`);
+}
+
+const browser = await Browser.Open();
+try {
+  if (speedIndex > 0) {
+    for (const item of process.argv.slice(speedIndex + 1)) await Speed(browser, ...item.split(':'));
+  } else {
+    CheckLinks();
+    await CheckBadAddresses(browser);
+    await CheckCamera(browser, '05-raytracer-extensions', 'fig-5-1-camera');
+    await CheckCamera(browser, '15-rasterizer-extensions', 'everything');
+    await CheckIndex(browser);
+    await CheckEveryFigure(browser);
+  }
+} finally {
+  await browser.Close();
+}
+console.log(failures === 0 ? 'PASS: the site' : `${failures} failed`);
+process.exit(failures === 0 ? 0 : 1);

@@ -1,0 +1,56 @@
+// Reads a PNG file as the project writes them (8 bits, RGB or RGBA, not interlaced)
+// into RGBA bytes, as a canvas's ImageData holds them: enough to compare a page's
+// canvas with a golden image (tests/site/check_site.mjs) without a package.
+import {readFileSync} from 'node:fs';
+import {inflateSync} from 'node:zlib';
+
+// PNG's Paeth predictor: of the left, upper and upper-left bytes, the one nearest
+// to left + upper - upper-left.
+function Paeth(left, up, upLeft) {
+  const estimate = left + up - upLeft;
+  const [toLeft, toUp, toUpLeft] = [left, up, upLeft].map((v) => Math.abs(estimate - v));
+  return toLeft <= toUp && toLeft <= toUpLeft ? left : toUp <= toUpLeft ? up : upLeft;
+}
+
+export function ReadPng(path) {
+  const file = readFileSync(path);
+  let width = 0, height = 0, channels = 0;
+  const compressed = [];
+  for (let at = 8; at < file.length;) {
+    const length = file.readUInt32BE(at);
+    const type = file.toString('latin1', at + 4, at + 8);
+    const body = file.subarray(at + 8, at + 8 + length);
+    if (type === 'IHDR') {
+      [width, height] = [body.readUInt32BE(0), body.readUInt32BE(4)];
+      const [depth, colour, interlace] = [body[8], body[9], body[12]];
+      if (depth !== 8 || interlace !== 0 || (colour !== 2 && colour !== 6)) {
+        throw new Error(`${path}: not an 8-bit RGB or RGBA PNG without interlacing`);
+      }
+      channels = colour === 2 ? 3 : 4;
+    } else if (type === 'IDAT') {
+      compressed.push(body);
+    }
+    at += 12 + length;
+  }
+  const filtered = inflateSync(Buffer.concat(compressed));
+  const stride = width * channels;
+  const rgba = Buffer.alloc(width * height * 4);
+  let above = Buffer.alloc(stride);
+  for (let y = 0; y < height; ++y) {
+    const filter = filtered[y * (stride + 1)];
+    const row = Buffer.from(filtered.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1)));
+    for (let i = 0; i < stride; ++i) {
+      const left = i >= channels ? row[i - channels] : 0;
+      const upLeft = i >= channels ? above[i - channels] : 0;
+      const predicted = [0, left, above[i], (left + above[i]) >> 1, Paeth(left, above[i], upLeft)];
+      row[i] = (row[i] + predicted[filter]) & 255;
+    }
+    for (let x = 0; x < width; ++x) {
+      const to = (y * width + x) * 4;
+      row.copy(rgba, to, x * channels, x * channels + 3);
+      rgba[to + 3] = channels === 4 ? row[x * channels + 3] : 255;
+    }
+    above = row;
+  }
+  return {width, height, rgba};
+}

@@ -1,0 +1,388 @@
+#!/usr/bin/env python3
+"""Writes the static site of scripts/site: every chapter's page, with its figures drawn
+live by the chapter's C++ compiled to WebAssembly, its README, its source files and its
+diff from the chapter it continues; an index that mirrors the README's chapter table.
+
+Usage: make_site.py REPO WEB_BUILD OUT
+  REPO       the project's folder
+  WEB_BUILD  where the web preset put <chapter>.js (build-web/web)
+  OUT        the site's folder (out/site): made whole in a fresh folder beside it
+             (out/.site-new-*), then put in its place; nothing else is written
+
+Every page a README links to is made too (the docs, the golden images, the catalogues
+of mistakes, ...), so links work inside the site; a link to a file the repository does
+not have stops the build with one line. Exit status 0, or 1 with one line on stderr.
+"""
+import html
+import json
+import os
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+from pathlib import Path, PurePosixPath
+
+SITE_FILES = Path(__file__).resolve().parent  # chapter.js, index.js, site.css
+IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".svg"}
+LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a page
+
+
+class SiteError(Exception):
+    pass
+
+
+class SiteFolder:
+    """The site, written into a fresh folder beside OUT and put in OUT's place only once
+    it is whole: a build that fails leaves the old site as it was. OUT must be a folder
+    of its own (not a link), and every file goes inside it."""
+
+    def __init__(self, out):
+        self.out = Path(os.path.abspath(out))
+        if self.out.is_symlink() or (self.out.exists() and not self.out.is_dir()):
+            raise SiteError(f"{out} is not a folder; remove it or choose another")
+        self.out.parent.mkdir(parents=True, exist_ok=True)
+        self.root = Path(tempfile.mkdtemp(dir=self.out.parent, prefix=f".{self.out.name}-new-"))
+
+    def write(self, relative, data):
+        target = Path(os.path.normpath(self.root / relative))
+        if os.path.commonpath([self.root, target]) != str(self.root):
+            raise SiteError(f"{relative} would be written outside the site")
+        if target.exists():
+            raise SiteError(f"two pages of the site would be {relative}")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(data.encode() if isinstance(data, str) else data)
+
+    def publish(self):
+        old = None
+        if self.out.exists():
+            old = tempfile.mkdtemp(dir=self.out.parent, prefix=f".{self.out.name}-old-")
+            os.replace(self.out, Path(old) / "site")
+        os.chmod(self.root, 0o755)
+        os.replace(self.root, self.out)
+        if old:
+            shutil.rmtree(old)
+
+    def discard(self):
+        shutil.rmtree(self.root, ignore_errors=True)
+
+
+def png_size(path):
+    """The width and height of a PNG file, from its header."""
+    with open(path, "rb") as file:
+        header = file.read(24)
+    if len(header) < 24 or header[:8] != b"\x89PNG\r\n\x1a\n":
+        raise SiteError(f"{path} is not a PNG file")
+    return list(struct.unpack(">II", header[16:24]))
+
+
+def slug(text):
+    """A heading's anchor as GitHub makes it: lower case, punctuation dropped,
+    spaces as dashes."""
+    text = re.sub(r"<[^>]*>", "", html.unescape(text)).strip().lower()
+    return re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
+
+
+def add_heading_ids(page):
+    seen = {}
+
+    def with_id(match):
+        base = slug(match.group(2))
+        count = seen.get(base, 0)
+        seen[base] = count + 1
+        anchor = base if count == 0 else f"{base}-{count}"
+        return f'<h{match.group(1)} id="{anchor}">{match.group(2)}</h{match.group(1)}>'
+
+    return re.sub(r"<h([1-6])>(.*?)</h\1>", with_id, page)
+
+
+def relative_link(from_page, to_page):
+    """The link from one site page to another (both relative to the site's root)."""
+    start = PurePosixPath(from_page).parent
+    return os.path.relpath(to_page, start.as_posix() if start.parts else ".")
+
+
+class Site:
+    def __init__(self, repo, web_build, out):
+        self.repo = Path(repo).resolve()
+        self.web_build = Path(web_build)
+        self.folder = SiteFolder(out)
+        self.chapters = sorted(p.name for p in (self.repo / "chapters").iterdir()
+                               if re.match(r"\d\d-", p.name) and p.is_dir())
+        self.pending = []  # repository paths linked to and not made yet
+        self.made = {f"chapters/{chapter}/README.md" for chapter in self.chapters}  # or to be made
+
+    # Where a file of the repository is in the site.
+    def site_path(self, repo_path):
+        parts = PurePosixPath(repo_path).parts
+        if repo_path == "README.md":
+            return "readme.html"
+        if len(parts) == 3 and parts[0] == "chapters" and parts[2] == "README.md":
+            return f"{parts[1]}/index.html"
+        if len(parts) == 3 and parts[0] == "chapters":
+            return f"{parts[1]}/source/{parts[2]}.html"
+        if (self.repo / repo_path).is_dir():
+            return f"{repo_path}/index.html"
+        suffix = PurePosixPath(repo_path).suffix
+        if suffix in IMAGE_SUFFIXES:
+            return repo_path
+        if suffix == ".md":
+            return repo_path[:-3] + ".html"
+        return repo_path + ".html"
+
+    def link(self, from_page, repo_path):
+        """The site's link to a repository file from a page; the file is made later."""
+        if repo_path not in self.made:
+            self.made.add(repo_path)
+            self.pending.append(repo_path)
+        return relative_link(from_page, self.site_path(repo_path))
+
+    def rewrite_links(self, page, markdown_path, site_page):
+        """Points a rendered Markdown file's relative links and images into the site."""
+        folder = PurePosixPath(markdown_path).parent
+
+        def rewrite(match):
+            attribute, target = match.group(1), html.unescape(match.group(2))
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                return match.group(0)
+            path, _, anchor = target.partition("#")
+            resolved = os.path.normpath((folder / path).as_posix())
+            if resolved.startswith("..") or not (self.repo / resolved).exists():
+                raise SiteError(f"{markdown_path} links to {target}, which the repository does not have")
+            new = self.link(site_page, resolved) + (f"#{anchor}" if anchor else "")
+            return f'{attribute}="{html.escape(new)}"'
+
+        return re.sub(r'(href|src)="([^"]*)"', rewrite, page)
+
+    def markdown(self, repo_path, site_page):
+        text = (self.repo / repo_path).read_text()
+        rendered = subprocess.run(["cmark-gfm", "-e", "table", "-e", "autolink", "-e", "strikethrough"],
+                                  input=text, capture_output=True, text=True, check=True).stdout
+        return self.rewrite_links(add_heading_ids(rendered), repo_path, site_page)
+
+    def page(self, site_page, title, body, scripts=()):
+        css = relative_link(site_page, "site.css")
+        home = relative_link(site_page, "index.html")
+        tags = "".join(f'<script src="{relative_link(site_page, s)}"></script>\n' for s in scripts)
+        self.folder.write(site_page, f"""<!doctype html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{html.escape(title)}</title>
+<link rel="stylesheet" href="{css}">
+</head>
+<body>
+<header><a href="{home}">Computer Graphics from Scratch — a C++ companion</a></header>
+{body}
+{tags}</body>
+</html>
+""")
+
+    # The pages.
+    def chapter_page(self, chapter):
+        readme = f"chapters/{chapter}/README.md"
+        site_page = f"{chapter}/index.html"
+        article = self.markdown(readme, site_page)
+        title = re.search(r"<h1[^>]*>(.*?)</h1>", article)
+        title = re.sub(r"<[^>]*>", "", title.group(1)) if title else chapter
+        golden = self.repo / "tests" / "golden" / chapter
+        sizes = {p.stem: png_size(p) for p in sorted(golden.glob("*.png"))}
+        self.folder.write(f"{chapter}/figures.js", (self.web_build / f"{chapter}.js").read_bytes())
+        index = self.chapters.index(chapter)
+        around = []
+        if index > 0:
+            around.append(f'<a href="../{self.chapters[index - 1]}/index.html">← {self.chapters[index - 1]}</a>')
+        if index + 1 < len(self.chapters):
+            around.append(f'<a href="../{self.chapters[index + 1]}/index.html">{self.chapters[index + 1]} →</a>')
+        base = self.diff_base(chapter)
+        code = [f'<a href="source/index.html">its source files</a>']
+        code.append(f'<a href="diff.html">its diff from {base}</a>' if base
+                    else "no diff: it starts afresh, every file is new")
+        body = f"""<nav>{" · ".join(around)} · {" · ".join(code)}</nav>
+<main class="chapter">
+<section id="live" data-module="Chapter{chapter[:2]}" data-sizes='{json.dumps(sizes)}'>
+<div id="figures" role="radiogroup" aria-label="figures"></div>
+<canvas id="canvas" width="600" height="600"></canvas>
+<p id="caption"></p>
+<p id="status">Loading the chapter's code…</p>
+<p id="problem" hidden></p>
+<div id="camera" hidden>
+<p>The view: <code id="view"></code> · <a id="view-link" href="">a link to this view</a>
+· <button id="reset" type="button">back to the chapter's view (R)</button></p>
+<p class="keys"><kbd>↑</kbd> <kbd>↓</kbd> forward, back · <kbd>A</kbd> <kbd>D</kbd> left, right ·
+<kbd>PgUp</kbd> <kbd>PgDn</kbd> up, down · <kbd>Q</kbd> <kbd>E</kbd> turn · <kbd>Home</kbd> <kbd>End</kbd>
+look up, down · drag the picture to turn and look · <kbd>←</kbd> <kbd>→</kbd> figures.
+While the camera moves, frames are drawn at half size; the full one follows when it stops.</p>
+</div>
+<p class="note">Drawn in your browser by this chapter's C++, compiled to WebAssembly,
+on one thread: the native program of chapters 5, 16 and 17 uses every core, here
+their <code>all</code> optimisations use one worker. Every figure is the same, byte
+for byte, as the native program's golden image.</p>
+</section>
+<article class="readme">
+{article}
+</article>
+</main>"""
+        self.page(site_page, f"{chapter} — {title}", body, [f"{chapter}/figures.js", "chapter.js"])
+
+    def diff_base(self, chapter):
+        """The chapter this one continues, as its README's `diff -ruN` line says."""
+        text = (self.repo / "chapters" / chapter / "README.md").read_text()
+        found = re.search(rf"diff -ruN chapters/(\S+) chapters/{re.escape(chapter)}\b", text)
+        return found.group(1) if found else None
+
+    def diff_page(self, chapter, base):
+        result = subprocess.run(["diff", "-ruN", f"chapters/{base}", f"chapters/{chapter}"],
+                                cwd=self.repo, capture_output=True, text=True)
+        if result.returncode not in (0, 1):
+            raise SiteError(f"diff of {base} and {chapter} failed: {result.stderr.strip()}")
+        lines = []
+        for line in result.stdout.splitlines():
+            kind = ("file" if line.startswith(("diff ", "--- ", "+++ ")) else "hunk" if line.startswith("@@")
+                    else "added" if line.startswith("+") else "removed" if line.startswith("-") else "same")
+            lines.append(f'<span class="{kind}">{html.escape(line)}</span>')
+        added = sum(1 for l in result.stdout.splitlines() if l.startswith("+") and not l.startswith("+++"))
+        removed = sum(1 for l in result.stdout.splitlines() if l.startswith("-") and not l.startswith("---"))
+        body = f"""<nav><a href="index.html">{chapter}</a> · <a href="../{base}/index.html">{base}</a></nav>
+<main class="text">
+<h1>From {base} to {chapter}</h1>
+<p>What the chapter changes: <code>diff -ruN chapters/{base} chapters/{chapter}</code>,
+{added} lines added and {removed} removed.</p>
+<pre class="diff">{chr(10).join(lines)}</pre>
+</main>"""
+        self.page(f"{chapter}/diff.html", f"{chapter}: its diff from {base}", body)
+
+    def sources_page(self, chapter):
+        files = sorted(p.name for p in (self.repo / "chapters" / chapter).iterdir()
+                       if p.is_file() and p.name != "README.md")
+        rows = []
+        for name in files:
+            link = self.link(f"{chapter}/source/index.html", f"chapters/{chapter}/{name}")
+            count = len((self.repo / "chapters" / chapter / name).read_text().splitlines())
+            rows.append(f'<tr><td><a href="{link}"><code>{name}</code></a></td><td>{count}</td></tr>')
+        body = f"""<nav><a href="../index.html">{chapter}</a></nav>
+<main class="text">
+<h1>{chapter}: its files</h1>
+<table><thead><tr><th>file</th><th>lines</th></tr></thead><tbody>
+{chr(10).join(rows)}
+</tbody></table>
+</main>"""
+        self.page(f"{chapter}/source/index.html", f"{chapter}: its files", body)
+
+    def text_page(self, repo_path):
+        site_page = self.site_path(repo_path)
+        data = (self.repo / repo_path).read_bytes()
+        if len(data) > LARGEST_TEXT_FILE:
+            raise SiteError(f"{repo_path} is linked to and larger than {LARGEST_TEXT_FILE} bytes")
+        try:
+            text = data.decode()
+        except UnicodeDecodeError:
+            raise SiteError(f"{repo_path} is linked to and is not text") from None
+        numbered = "\n".join(f'<span id="L{n}">{html.escape(line)}</span>'
+                             for n, line in enumerate(text.splitlines(), 1))
+        body = f"""<main class="text">
+<h1><code>{html.escape(repo_path)}</code></h1>
+<pre class="source">{numbered}</pre>
+</main>"""
+        self.page(site_page, repo_path, body)
+
+    def folder_page(self, repo_path):
+        site_page = self.site_path(repo_path)
+        items = []
+        for entry in sorted((self.repo / repo_path).iterdir()):
+            if entry.is_file() and entry.stat().st_size <= LARGEST_TEXT_FILE:
+                link = self.link(site_page, f"{repo_path}/{entry.name}")
+                items.append(f'<li><a href="{link}"><code>{entry.name}</code></a></li>')
+        body = f"""<main class="text">
+<h1><code>{html.escape(repo_path)}/</code></h1>
+<ul>{"".join(items)}</ul>
+</main>"""
+        self.page(site_page, repo_path, body)
+
+    def linked_file(self, repo_path):
+        site_page = self.site_path(repo_path)
+        if (self.repo / repo_path).is_dir():
+            self.folder_page(repo_path)
+        elif PurePosixPath(repo_path).suffix in IMAGE_SUFFIXES:
+            self.folder.write(site_page, (self.repo / repo_path).read_bytes())
+        elif repo_path.endswith(".md"):
+            article = self.markdown(repo_path, site_page)
+            self.page(site_page, repo_path, f'<main class="text readme">\n{article}\n</main>')
+        else:
+            self.text_page(repo_path)
+
+    def index_page(self, speed_table):
+        readme = (self.repo / "README.md").read_text()
+        table = re.search(r"^\| chapter \| book \|.*?\n(?=\n)", readme, re.S | re.M)
+        if not table:
+            raise SiteError("README.md has no chapter table (a row starting '| chapter | book |')")
+        rows = table.group(0).splitlines()
+        rows[0] = "| live | " + rows[0][2:]
+        rows[1] = "|---|" + rows[1][1:]
+        for i in range(2, len(rows)):
+            name = re.search(r"\[`(\d\d-[a-z-]+)`\]", rows[i]).group(1)
+            rows[i] = f"| `thumbnail:{name}` | " + rows[i][2:]
+        self.link("index.html", "README.md")
+        rendered = subprocess.run(["cmark-gfm", "-e", "table"], input="\n".join(rows) + "\n",
+                                  capture_output=True, text=True, check=True).stdout
+        rendered = self.rewrite_links(rendered, "README.md", "index.html")
+        rendered = re.sub(r"<code>thumbnail:(\d\d)-([a-z-]+)</code>",
+                          lambda m: f'<a href="{m.group(1)}-{m.group(2)}/index.html"><canvas class="thumbnail" '
+                                    f'data-chapter="{m.group(1)}-{m.group(2)}" data-module="Chapter{m.group(1)}" '
+                                    f'width="120" height="120"></canvas></a>', rendered)
+        speed = self.markdown_text(speed_table, "index.html") if speed_table else ""
+        body = f"""<main class="text index">
+<h1>The chapters, live</h1>
+<p>Every chapter of the companion as its own page: its figures drawn in your browser by
+the chapter's C++ compiled to WebAssembly (the small pictures below are drawn that way
+as this page loads), its README, its source files and its diff from the chapter it
+continues. The project's own <a href="readme.html">README</a> says how to build the
+programs, run the tests and compare your own images with these.</p>
+{rendered}
+{speed}
+</main>"""
+        self.page("index.html", "Computer Graphics from Scratch — a C++ companion", body,
+                  [f"{c}/figures.js" for c in self.chapters] + ["index.js"])
+
+    def markdown_text(self, path, site_page):
+        return self.markdown(os.path.relpath(path, self.repo), site_page)
+
+    def build(self):
+        for name in ("chapter.js", "index.js", "site.css"):
+            self.folder.write(name, (SITE_FILES / name).read_bytes())
+        for chapter in self.chapters:
+            if not (self.web_build / f"{chapter}.js").is_file():
+                raise SiteError(f"no {self.web_build}/{chapter}.js: build the web preset first")
+            self.chapter_page(chapter)
+            self.sources_page(chapter)
+            base = self.diff_base(chapter)
+            if base:
+                self.diff_page(chapter, base)
+        self.index_page(SITE_FILES / "speed.md" if (SITE_FILES / "speed.md").exists() else None)
+        while self.pending:
+            self.linked_file(self.pending.pop())
+        return len(self.chapters)
+
+
+def main():
+    if len(sys.argv) != 4:
+        print(__doc__.split("\n\n")[1], file=sys.stderr)
+        return 2
+    site = None
+    try:
+        site = Site(*sys.argv[1:])
+        count = site.build()
+        site.folder.publish()
+    except (SiteError, OSError, subprocess.CalledProcessError) as error:
+        print(f"make_site: {error}", file=sys.stderr)
+        if site:
+            site.folder.discard()
+        return 1
+    print(f"wrote {count} chapter pages and their files to {sys.argv[3]}/index.html")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
