@@ -22,7 +22,15 @@ void PrepareScene(Scene& scene, const Optimizations& optimizations) {
       }
     }
   }
-  scene.bvh = optimizations.bvh ? std::make_shared<const Bvh>(scene.objects) : nullptr;
+  // A hierarchy that is a single leaf (a handful of objects) would only put a call
+  // in front of the plain loop: such a scene is searched without one.
+  scene.bvh = nullptr;
+  if (optimizations.bvh) {
+    auto bvh = std::make_shared<const Bvh>(scene.objects);
+    if (bvh->NodeCount() > 1) {
+      scene.bvh = std::move(bvh);
+    }
+  }
 }
 
 Ray MakeRay(const Vec3& O, const Vec3& D, const Scene& scene) {
