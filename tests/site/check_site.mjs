@@ -9,13 +9,15 @@
 //    chapter's first figure; the index draws a picture for every chapter;
 //  - every link of every page leads to a file of the site.
 // With --speed CHAPTER:FIGURE ..., it only times those figures instead: the best of
-// 5 draws on the page, and of 3 runs of the native program on one thread.
+// 5 draws on the page, and of 3 runs of the native program on one thread. With
+// --screenshot PAGE WIDTHxHEIGHT FILE, it saves a PNG of the page once it is drawn.
 //
-// Usage: node --experimental-websocket check_site.mjs REPO SITE NATIVE_BUILD [--speed ...]
+// Usage: node --experimental-websocket check_site.mjs REPO SITE NATIVE_BUILD
+//            [--speed CHAPTER:FIGURE ... | --screenshot PAGE WIDTHxHEIGHT FILE]
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {spawn, execFileSync} from 'node:child_process';
 import {createHash} from 'node:crypto';
-import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync} from 'node:fs';
+import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, dirname, resolve} from 'node:path';
 import {ReadPng} from './png.mjs';
@@ -258,9 +260,24 @@ async function Speed(browser, chapter, figure) {
               `${(inPage / natively).toFixed(2)} |`);
 }
 
+// A picture of a page (its address relative to the site) once its figures are drawn.
+async function Screenshot(browser, page, size, file) {
+  const [width, height] = size.split('x').map(Number);
+  await browser.Send('Emulation.setDeviceMetricsOverride', {width, height, deviceScaleFactor: 1, mobile: false});
+  await browser.Open(page);
+  await browser.WaitFor("document.getElementById('canvas')?.dataset.drawn === 'full' || " +
+                        "document.body.dataset.thumbnails === 'drawn'", `${page} drawn`, 120);
+  const {data} = await browser.Send('Page.captureScreenshot', {format: 'png'});
+  writeFileSync(file, Buffer.from(data, 'base64'));
+  console.log(`wrote ${file}`);
+}
+
 const browser = await Browser.Open();
+const screenshotIndex = process.argv.indexOf('--screenshot');
 try {
-  if (speedIndex > 0) {
+  if (screenshotIndex > 0) {
+    await Screenshot(browser, ...process.argv.slice(screenshotIndex + 1, screenshotIndex + 4));
+  } else if (speedIndex > 0) {
     for (const item of process.argv.slice(speedIndex + 1)) await Speed(browser, ...item.split(':'));
   } else {
     CheckLinks();

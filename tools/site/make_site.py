@@ -187,8 +187,7 @@ class Site:
         article = self.markdown(readme, site_page)
         title = re.search(r"<h1[^>]*>(.*?)</h1>", article)
         title = re.sub(r"<[^>]*>", "", title.group(1)) if title else chapter
-        golden = self.repo / "tests" / "golden" / chapter
-        sizes = {p.stem: png_size(p) for p in sorted(golden.glob("*.png"))}
+        sizes = self.figure_sizes(chapter)
         self.folder.write(f"{chapter}/figures.js", (self.web_build / f"{chapter}.js").read_bytes())
         index = self.chapters.index(chapter)
         around = []
@@ -227,6 +226,11 @@ for byte, as the native program's golden image.</p>
 </main>"""
         self.page(site_page, f"{chapter} — {title}", body, [f"{chapter}/figures.js", "chapter.js"])
 
+    def figure_sizes(self, chapter):
+        """Each figure's size: its golden image's, which the native program draws at."""
+        golden = self.repo / "tests" / "golden" / chapter
+        return {p.stem: png_size(p) for p in sorted(golden.glob("*.png"))}
+
     def diff_base(self, chapter):
         """The chapter this one continues, as its README's `diff -ruN` line says."""
         text = (self.repo / "chapters" / chapter / "README.md").read_text()
@@ -240,17 +244,20 @@ for byte, as the native program's golden image.</p>
             raise SiteError(f"diff of {base} and {chapter} failed: {result.stderr.strip()}")
         lines = []
         for line in result.stdout.splitlines():
+            if line.startswith(("--- ", "+++ ")):
+                line = line.split("\t")[0]  # without the files' times, which say nothing here
             kind = ("file" if line.startswith(("diff ", "--- ", "+++ ")) else "hunk" if line.startswith("@@")
                     else "added" if line.startswith("+") else "removed" if line.startswith("-") else "same")
             lines.append(f'<span class="{kind}">{html.escape(line)}</span>')
         added = sum(1 for l in result.stdout.splitlines() if l.startswith("+") and not l.startswith("+++"))
         removed = sum(1 for l in result.stdout.splitlines() if l.startswith("-") and not l.startswith("---"))
-        body = f"""<nav><a href="index.html">{chapter}</a> · <a href="../{base}/index.html">{base}</a></nav>
+        body = f"""<nav><a href="index.html">{chapter}</a>, this chapter · <a href="../{base}/index.html">{base}</a>,
+the chapter it continues · <a href="source/index.html">its source files</a></nav>
 <main class="text">
 <h1>From {base} to {chapter}</h1>
 <p>What the chapter changes: <code>diff -ruN chapters/{base} chapters/{chapter}</code>,
 {added} lines added and {removed} removed.</p>
-<pre class="diff">{chr(10).join(lines)}</pre>
+<pre class="diff">{"".join(lines)}</pre>
 </main>"""
         self.page(f"{chapter}/diff.html", f"{chapter}: its diff from {base}", body)
 
@@ -280,9 +287,12 @@ for byte, as the native program's golden image.</p>
             text = data.decode()
         except UnicodeDecodeError:
             raise SiteError(f"{repo_path} is linked to and is not text") from None
-        numbered = "\n".join(f'<span id="L{n}">{html.escape(line)}</span>'
+        numbered = "".join(f'<span id="L{n}">{html.escape(line)}</span>'
                              for n, line in enumerate(text.splitlines(), 1))
-        body = f"""<main class="text">
+        parts = PurePosixPath(repo_path).parts
+        nav = (f'<nav><a href="../index.html">{parts[1]}</a> · <a href="index.html">its files</a></nav>\n'
+               if parts[0] == "chapters" else "")
+        body = f"""{nav}<main class="text">
 <h1><code>{html.escape(repo_path)}</code></h1>
 <pre class="source">{numbered}</pre>
 </main>"""
@@ -328,10 +338,11 @@ for byte, as the native program's golden image.</p>
         rendered = subprocess.run(["cmark-gfm", "-e", "table"], input="\n".join(rows) + "\n",
                                   capture_output=True, text=True, check=True).stdout
         rendered = self.rewrite_links(rendered, "README.md", "index.html")
-        rendered = re.sub(r"<code>thumbnail:(\d\d)-([a-z-]+)</code>",
-                          lambda m: f'<a href="{m.group(1)}-{m.group(2)}/index.html"><canvas class="thumbnail" '
-                                    f'data-chapter="{m.group(1)}-{m.group(2)}" data-module="Chapter{m.group(1)}" '
-                                    f'width="120" height="120"></canvas></a>', rendered)
+        rendered = re.sub(r"<code>thumbnail:((\d\d)-[a-z-]+)</code>",
+                          lambda m: f'<a href="{m.group(1)}/index.html"><canvas class="thumbnail" '
+                                    f'data-chapter="{m.group(1)}" data-module="Chapter{m.group(2)}" '
+                                    f"data-sizes='{json.dumps(self.figure_sizes(m.group(1)))}' "
+                                    f'width="150" height="150"></canvas></a>', rendered)
         speed = self.markdown_text(speed_table, "index.html") if speed_table else ""
         body = f"""<main class="text index">
 <h1>The chapters, live</h1>
