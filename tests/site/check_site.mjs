@@ -9,7 +9,7 @@
 //    chapter's first figure; the index draws a picture for every chapter;
 //  - every link of every page leads to a file of the site.
 // With --speed CHAPTER:FIGURE ..., it only times those figures instead: the best of
-// 5 draws on the page, and of 3 runs of the native program on one thread. With
+// 15 draws on the page, and of 5 runs of the native program on one thread. With
 // --screenshot PAGE WIDTHxHEIGHT FILE, it saves a PNG of the page once it is drawn.
 //
 // Usage: node --experimental-websocket check_site.mjs REPO SITE NATIVE_BUILD
@@ -236,20 +236,20 @@ function CheckLinks() {
   console.log(`${links} links in ${pages.length} pages, each to a file of the site`);
 }
 
-// Milliseconds of a figure: on its page the best of 5 draws, natively the best of 3 runs
-// on one thread (the time the program prints).
+// Milliseconds of a figure: on its page the best of 15 draws, natively the best of 5
+// runs on one thread (the time the program prints).
 async function Speed(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
   const index = await browser.Evaluate(
       `Array.from(document.querySelectorAll('#figures button'), (b) => b.textContent).indexOf('${figure}')`);
   const page = [];
-  for (let i = 0; i < 5; ++i) {
+  for (let i = 0; i < 15; ++i) {
     await ShowFigure(browser, index);
     page.push(Number(await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds")));
   }
   const threads = ['05', '16', '17'].includes(chapter.slice(0, 2)) ? ['--threads', '1'] : [];
   const runs = [];
-  for (let i = 0; i < 3; ++i) {
+  for (let i = 0; i < 5; ++i) {
     const out = mkdtempSync(join(tmpdir(), 'cgfs-speed-'));
     const printed = execFileSync(join(native, chapter), ['--figure', figure, '--output', out, ...threads]).toString();
     rmSync(out, {recursive: true});

@@ -213,12 +213,15 @@ class Site:
 <p class="keys"><kbd>↑</kbd> <kbd>↓</kbd> forward, back · <kbd>A</kbd> <kbd>D</kbd> left, right ·
 <kbd>PgUp</kbd> <kbd>PgDn</kbd> up, down · <kbd>Q</kbd> <kbd>E</kbd> turn · <kbd>Home</kbd> <kbd>End</kbd>
 look up, down · drag the picture to turn and look · <kbd>←</kbd> <kbd>→</kbd> figures.
-While the camera moves, frames are drawn at half size; the full one follows when it stops.</p>
+While the camera moves, frames are drawn at half size; the full one follows when it stops.
+<code>--view</code> with the view above draws this frame natively; rarely, one byte of it
+differs by one, since this build's C library and Linux's round the last bit of sin and
+cos apart for a few angles in a hundred.</p>
 </div>
 <p class="note">Drawn in your browser by this chapter's C++, compiled to WebAssembly,
-on one thread: the native program of chapters 5, 16 and 17 uses every core, here
-their <code>all</code> optimisations use one worker. Every figure is the same, byte
-for byte, as the native program's golden image.</p>
+on one thread: the native programs of chapters 5, 16 and 17 use every core, here their
+<code>all</code> optimisations use one worker. Every figure is the same, byte for byte,
+as the native program's golden image.</p>
 </section>
 <article class="readme">
 {article}
