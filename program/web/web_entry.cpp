@@ -30,7 +30,7 @@ const std::vector<cgfs::Figure>& ChapterFigures() {
   return figures;
 }
 
-cgfs::View view;                  // the camera's view, for the figures that have one
+cgfs::View view;                   // the camera's view, for the figures that have one
 std::vector<std::uint8_t> pixels;  // the last figure drawn, RGBA
 std::string text;                  // what the last call that returns text returned
 std::string last_error;
@@ -54,9 +54,15 @@ const char* Text(std::string value) {
 
 extern "C" {
 
-EMSCRIPTEN_KEEPALIVE const char* ChapterName() { return CGFS_CHAPTER; }
-EMSCRIPTEN_KEEPALIVE const char* ChapterDescription() { return kChapterDescription; }
-EMSCRIPTEN_KEEPALIVE int FigureCount() { return static_cast<int>(ChapterFigures().size()); }
+EMSCRIPTEN_KEEPALIVE const char* ChapterName() {
+  return CGFS_CHAPTER;
+}
+EMSCRIPTEN_KEEPALIVE const char* ChapterDescription() {
+  return kChapterDescription;
+}
+EMSCRIPTEN_KEEPALIVE int FigureCount() {
+  return static_cast<int>(ChapterFigures().size());
+}
 
 // The figure's name, its caption, and whether it has a camera to move (1) or not (0);
 // an index out of range gives "" and -1.
@@ -105,8 +111,12 @@ EMSCRIPTEN_KEEPALIVE int DrawFigure(int index, int width, int height) {
     return 0;
   }
 }
-EMSCRIPTEN_KEEPALIVE const std::uint8_t* Pixels() { return pixels.data(); }
-EMSCRIPTEN_KEEPALIVE const char* LastError() { return last_error.c_str(); }
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* Pixels() {
+  return pixels.data();
+}
+EMSCRIPTEN_KEEPALIVE const char* LastError() {
+  return last_error.c_str();
+}
 
 // The camera: a key (a cgfs::CameraKey, 0 to 9), a drag, back to the chapter's view,
 // or a view as --view takes it ("x,y,z,yaw,pitch": 1, or 0 with LastError()).
@@ -118,7 +128,9 @@ EMSCRIPTEN_KEEPALIVE void PressCameraKey(int key) {
 EMSCRIPTEN_KEEPALIVE void DragCamera(int right, int down) {
   view = cgfs::Dragged(view, right, down);
 }
-EMSCRIPTEN_KEEPALIVE void ResetView() { view = cgfs::View{}; }
+EMSCRIPTEN_KEEPALIVE void ResetView() {
+  view = cgfs::View{};
+}
 EMSCRIPTEN_KEEPALIVE int SetView(const char* value) {
   try {
     view = cgfs::ParseView(value);
@@ -128,8 +140,14 @@ EMSCRIPTEN_KEEPALIVE int SetView(const char* value) {
     return 0;
   }
 }
-EMSCRIPTEN_KEEPALIVE const char* ViewText() { return Text(cgfs::FormatView(view)); }
-EMSCRIPTEN_KEEPALIVE int PreviewSide(int side) { return cgfs::PreviewSide(side); }
-EMSCRIPTEN_KEEPALIVE int SettleMilliseconds() { return cgfs::kSettleMilliseconds; }
+EMSCRIPTEN_KEEPALIVE const char* ViewText() {
+  return Text(cgfs::FormatView(view));
+}
+EMSCRIPTEN_KEEPALIVE int PreviewSide(int side) {
+  return cgfs::PreviewSide(side);
+}
+EMSCRIPTEN_KEEPALIVE int SettleMilliseconds() {
+  return cgfs::kSettleMilliseconds;
+}
 
 }  // extern "C"

@@ -41,7 +41,7 @@ class SiteFolder:
     def __init__(self, out):
         self.out = Path(os.path.abspath(out))
         if self.out.is_symlink() or (self.out.exists() and not self.out.is_dir()):
-            raise SiteError(f"{out} is not a folder; remove it or choose another")
+            raise SiteError(f"{out} is not a folder of its own (a file, or a link); remove it or choose another")
         self.out.parent.mkdir(parents=True, exist_ok=True)
         self.root = Path(tempfile.mkdtemp(dir=self.out.parent, prefix=f".{self.out.name}-new-"))
 
