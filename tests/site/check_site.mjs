@@ -115,11 +115,14 @@ class Browser {
     await mouse('mouseReleased', fromX + right, fromY + down, 0);
   }
 
+  // Asks Chromium to quit, and removes its profile once its last process has left it.
   async Close() {
     const exited = new Promise((done) => this.process.once('exit', done));
+    this.session = undefined;
+    this.Send('Browser.close').catch(() => {});
+    await Promise.race([exited, sleep(10000)]);
     this.process.kill();
-    await exited;
-    rmSync(this.profile, {recursive: true, force: true, maxRetries: 5});
+    rmSync(this.profile, {recursive: true, force: true, maxRetries: 50, retryDelay: 100});
   }
 }
 
