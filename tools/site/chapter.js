@@ -75,12 +75,15 @@ function ShowView() {
   document.getElementById('view-link').href = '?' + query.toString();
 }
 
+// Shows figure `index`: its button pressed, its caption, then its frame, drawn once
+// the page has shown that it is drawing (some figures take seconds).
 function Select(index) {
   shown = index;
   figures.forEach((figure, i) => figure.button.setAttribute('aria-checked', i === index));
   Say('caption', figures[index].caption);
+  Say('status', `drawing ${figures[index].name}…`);
   ShowView();
-  Draw(true);
+  requestAnimationFrame(() => setTimeout(() => Draw(true)));
 }
 
 // After the camera moved: a half-size frame at the next animation frame, the full one
