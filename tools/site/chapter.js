@@ -13,7 +13,9 @@ const kCameraKeys = ['ArrowUp', 'ArrowDown', 'd', 'a', 'PageUp', 'PageDown', 'q'
 
 const live = document.getElementById('live');
 const canvas = document.getElementById('canvas');
-const sizes = JSON.parse(live.dataset.sizes);  // each figure's size: its golden image's
+// Each figure's size: its golden image's (600 x 600, the programs' default, without one).
+const sizes = JSON.parse(live.dataset.sizes);
+const SizeOf = (name) => sizes[name] ?? [600, 600];
 
 let chapter = null;   // the chapter's WebAssembly module
 let figures = [];     // {name, caption, hasCamera, button}
@@ -33,7 +35,7 @@ function Text(pointer) { return chapter.UTF8ToString(pointer); }
 // size stretched over the canvas (as the window does), and says how long it took.
 function Draw(full) {
   const figure = figures[shown];
-  const [width, height] = sizes[figure.name];
+  const [width, height] = SizeOf(figure.name);
   const side = (n) => (full ? n : chapter._PreviewSide(n));
   const start = performance.now();
   if (!chapter._DrawFigure(shown, side(width), side(height))) {

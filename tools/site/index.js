@@ -25,7 +25,7 @@ function Shrink(pixels, width, height, factor) {
 async function DrawThumbnail(canvas) {
   const chapter = await window[canvas.dataset.module]();
   const name = chapter.UTF8ToString(chapter._FigureName(0));
-  const [width, height] = JSON.parse(canvas.dataset.sizes)[name];
+  const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600];  // its golden image's
   if (!chapter._DrawFigure(0, width, height)) {
     canvas.title = chapter.UTF8ToString(chapter._LastError());
     return;
