@@ -12,7 +12,7 @@
 // 15 draws on the page, and of 5 runs of the native program on one thread. With
 // --screenshot PAGE WIDTHxHEIGHT FILE, it saves a PNG of the page once it is drawn.
 //
-// Usage: node --experimental-websocket check_site.mjs REPO SITE NATIVE_BUILD
+// Usage: node check_site.mjs REPO SITE NATIVE_BUILD
 //            [--speed CHAPTER:FIGURE ... | --screenshot PAGE WIDTHxHEIGHT FILE]
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {spawn, execFileSync} from 'node:child_process';
@@ -28,7 +28,9 @@ const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
 let failures = 0;
 function Fail(line) { console.log(`FAIL: ${line}`); ++failures; }
 
-// Chromium, and one page of it, spoken to over a WebSocket.
+// Chromium, and one page of it, spoken to through --remote-debugging-pipe: the
+// browser reads commands from its file descriptor 3 and writes its answers to 4, each
+// message JSON ended by a NUL byte (no WebSocket, so any Node.js from 18 on will do).
 class Browser {
   static async Open() {
     const profile = mkdtempSync(join(tmpdir(), 'cgfs-site-'));
@@ -40,34 +42,38 @@ class Browser {
       globalThis.process.exit(2);
     }
     const process = spawn(binary, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
-      '--window-size=1400,1000', '--remote-debugging-port=0', `--user-data-dir=${profile}`, 'about:blank'],
-    {stdio: 'ignore'});
-    const portFile = join(profile, 'DevToolsActivePort');
-    for (let i = 0; i < 300 && !existsSync(portFile); ++i) await sleep(100);
-    const [port, path] = readFileSync(portFile, 'utf8').split('\n');
-    const browser = new Browser(process, profile, new WebSocket(`ws://127.0.0.1:${port}${path}`));
-    await new Promise((done) => browser.socket.addEventListener('open', done));
+      '--window-size=1400,1000', '--remote-debugging-pipe', `--user-data-dir=${profile}`, 'about:blank'],
+    {stdio: ['ignore', 'ignore', 'ignore', 'pipe', 'pipe']});
+    const browser = new Browser(process, profile);
     const {targetId} = await browser.Send('Target.createTarget', {url: 'about:blank'});
     browser.session = (await browser.Send('Target.attachToTarget', {targetId, flatten: true})).sessionId;
     await browser.Send('Page.enable');
     return browser;
   }
 
-  constructor(process, profile, socket) {
-    Object.assign(this, {process, profile, socket, next: 1, waiting: new Map(), session: undefined});
-    socket.addEventListener('message', (event) => {
-      const message = JSON.parse(event.data);
-      const waiter = this.waiting.get(message.id);
-      if (waiter) {
-        this.waiting.delete(message.id);
-        message.error ? waiter.reject(new Error(message.error.message)) : waiter.resolve(message.result);
-      }
+  constructor(process, profile) {
+    Object.assign(this, {process, profile, next: 1, waiting: new Map(), session: undefined});
+    let unread = '';
+    process.stdio[3].on('error', () => {});  // once the browser has quit
+    process.stdio[4].setEncoding('utf8');
+    process.stdio[4].on('data', (chunk) => {
+      const messages = (unread + chunk).split('\0');
+      unread = messages.pop();
+      for (const text of messages) this.Answer(JSON.parse(text));
     });
+  }
+
+  Answer(message) {
+    const waiter = this.waiting.get(message.id);
+    if (waiter) {
+      this.waiting.delete(message.id);
+      message.error ? waiter.reject(new Error(message.error.message)) : waiter.resolve(message.result);
+    }
   }
 
   Send(method, params = {}) {
     const id = this.next++;
-    this.socket.send(JSON.stringify({id, method, params, sessionId: this.session}));
+    this.process.stdio[3].write(JSON.stringify({id, method, params, sessionId: this.session}) + '\0');
     return new Promise((resolve, reject) => this.waiting.set(id, {resolve, reject}));
   }
 
@@ -169,6 +175,9 @@ async function CheckEveryFigure(browser) {
 
 async function CheckCamera(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
+  // The page's first frame is drawn after it loads: waited for, or it could land after
+  // the keys below and be taken for a frame of the moving camera.
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the first frame`);
   await browser.Evaluate("document.body.focus()");
   for (const key of ['ArrowUp', 'ArrowUp', 'q']) await browser.Key(key);
   const drawn = await browser.Evaluate(
