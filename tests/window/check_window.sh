@@ -47,7 +47,8 @@ fi
 # different ones (Xvfb -displayfd can hand two servers started at once the same
 # number); one in use makes Xvfb exit, and the next is tried.
 xvfb="" program_pid=""
-trap 'kill $program_pid $xvfb 2>/dev/null || true' EXIT
+# Waited for, so that no display outlives the test (and what it inherited, such as a lock).
+trap 'kill $program_pid $xvfb 2>/dev/null || true; wait 2>/dev/null || true' EXIT
 start_display() {  # NUMBER
   Xvfb ":$1" -screen 0 800x700x24 -nolisten tcp >>"$work/xvfb.log" 2>&1 &
   xvfb=$!
