@@ -4,6 +4,7 @@
 #include <atomic>
 #include <vector>
 
+#include "cost.h"
 #include "parallel.h"
 
 namespace {
@@ -62,7 +63,7 @@ Color SupersampledColor(int x, int y, int n, int recursion_depth, const Scene& s
 }  // namespace
 
 void RenderSceneSubsampled(const Scene& unprepared, int recursion_depth, Canvas& canvas,
-                           const Optimizations& optimizations) {
+                           const Optimizations& optimizations, std::vector<long>* searches) {
   Scene scene = unprepared;
   PrepareScene(scene, optimizations);
   const int threads = optimizations.threads;
@@ -75,6 +76,9 @@ void RenderSceneSubsampled(const Scene& unprepared, int recursion_depth, Canvas&
   ForEachTile(canvas.Width(), canvas.Height(), threads, [&](const Tile& tile) {
     for (int x = tile.x_begin; x < tile.x_end; ++x) {
       for (int y = tile.y_begin; y < tile.y_end; ++y) {
+        if (searches != nullptr) {
+          (*searches)[PixelIndex(x, y, canvas)] = traced(x, y) ? 1 : 0;
+        }
         if (traced(x, y)) {
           const Sample sample = TraceCameraRay(x, y, recursion_depth, scene, canvas);
           hit_object(x, y) = sample.object;
@@ -115,6 +119,9 @@ void RenderSceneSubsampled(const Scene& unprepared, int recursion_depth, Canvas&
             continue;
           }
         }
+        if (searches != nullptr) {
+          (*searches)[PixelIndex(x, y, canvas)] = 1;
+        }
         canvas.PutPixel(x, y, TraceRay(O, D, 1, cgfs::kInf, recursion_depth, scene));
       }
     }
@@ -136,7 +143,7 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
 }
 
 long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
-                         const Optimizations& optimizations) {
+                         const Optimizations& optimizations, std::vector<long>* rays) {
   Scene prepared = scene;
   PrepareScene(prepared, optimizations);
   const int threads = prepared.optimizations.threads;
@@ -165,6 +172,9 @@ long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas
           const Color difference = glm::abs(there.color - here.color);
           differs = differs || there.object != here.object ||
                     std::max({difference.r, difference.g, difference.b}) > kAdaptiveThreshold;
+        }
+        if (rays != nullptr) {
+          (*rays)[PixelIndex(x, y, canvas)] = differs ? 1 + 16 : 1;
         }
         if (differs) {
           ++subdivided;

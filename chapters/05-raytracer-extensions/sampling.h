@@ -1,6 +1,8 @@
 // Fewer rays than pixels ("Subsampling") and more ("Supersampling").
 #pragma once
 
+#include <vector>
+
 #include "raytracer.h"
 
 // "Subsampling", a main loop of its own beside RenderScene: traces the pixels with
@@ -8,9 +10,12 @@
 // sides (all four around, for a pixel in the middle of a square) hit the same object,
 // only that object is intersected, and when they all saw the background, so does the
 // pixel. Everywhere else the pixel is traced. Approximate: an object thinner than two
-// pixels can vanish. With the other optimisations chosen.
+// pixels can vanish. With the other optimisations chosen. If `searches` is given
+// (one count per pixel, cost.h), each pixel's is set to the camera rays searched
+// through the whole scene for it: 1 where it was traced, 0 where it was filled in.
 void RenderSceneSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas,
-                           const Optimizations& optimizations);
+                           const Optimizations& optimizations,
+                           std::vector<long>* searches = nullptr);
 
 // The main loop the optimisations choose: RenderSceneSubsampled when they ask for
 // subsampling, else RenderScene (what --optimizations does to every figure).
@@ -26,7 +31,8 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
 // The adaptive variant: one ray per pixel, then 4 x 4 rays only for the pixels
 // whose ray hits another object than a neighbour's, or whose colour differs from a
 // neighbour's by more than kAdaptiveThreshold in a channel. Returns how many pixels
-// were subdivided.
+// were subdivided; if `rays` is given (one count per pixel, cost.h), sets each pixel's
+// to the camera rays traced for it, 1 or 1 + 16.
 inline constexpr double kAdaptiveThreshold = 24;
 long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
-                         const Optimizations& optimizations);
+                         const Optimizations& optimizations, std::vector<long>* rays = nullptr);

@@ -6,8 +6,10 @@
 #include <numbers>
 #include <string>
 
+#include "cost.h"
 #include "csg.h"
 #include "meshes.h"
+#include "program/cost_view.h"
 #include "sampling.h"
 
 namespace {
@@ -254,6 +256,86 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
           }};
 }
 
+// A cost view: what `count` finds per pixel of a scene, drawn through the cost ramp
+// with `scale_max` at its top (program/cost_view.h).
+cgfs::Figure CostFigure(const std::string& name, const std::string& caption,
+                        std::function<Scene()> make_scene,
+                        std::function<std::vector<long>(const Scene&, Canvas&)> count,
+                        long scale_max) {
+  return SceneFigure(name, caption, std::move(make_scene),
+                     [count, scale_max](const Scene& scene, Canvas& canvas) {
+                       cgfs::DrawCost(canvas, count(scene, canvas), scale_max);
+                     });
+}
+
+// The box and object tests of each pixel's camera ray, together.
+std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizations optimizations) {
+  return [optimizations](const Scene& scene, Canvas& canvas) {
+    TestsPerPixel tests = PrimaryRayTests(scene, canvas, optimizations);
+    for (std::size_t i = 0; i < tests.boxes.size(); ++i) {
+      tests.objects[i] += tests.boxes[i];
+    }
+    return tests.objects;
+  };
+}
+
+// The cost views of the chapter's optimisations, each named after the figure it
+// explains.
+std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
+  Optimizations loop = optimizations, hierarchy = optimizations;
+  loop.bvh = false;
+  hierarchy.bvh = true;
+  const auto field = [] { return SceneSphereField(10000); };
+  const auto sized = [](Canvas& canvas) {
+    return std::vector<long>(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+  };
+  return {
+      CostFigure("sphere-field-10000-tests",
+                 "box and object tests per camera ray through the hierarchy, on a log scale to "
+                 "10 001: 13 414 717 in all, at most 292",
+                 field, TestsCounted(hierarchy), 10001),
+      CostFigure(
+          "sphere-field-10000-tests-without-hierarchy",
+          "tests per camera ray without the hierarchy, one per object: 3 600 360 000 in all, "
+          "at most 10 001",
+          field, TestsCounted(loop), 10001),
+      CostFigure(
+          "subsampling-thin-wires-searches",
+          "the pixels whose camera ray subsampling searched through the scene (white): "
+          "101 303 in all, at most 1",
+          SceneThinWires,
+          [optimizations, sized](const Scene& scene, Canvas& canvas) {
+            std::vector<long> searches = sized(canvas);
+            Canvas image(canvas.Width(), canvas.Height());
+            RenderSceneSubsampled(scene, 0, image, optimizations, &searches);
+            return searches;
+          },
+          1),
+      CostFigure(
+          "supersampling-adaptive-rays",
+          "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white): "
+          "443 744 in all, at most 17",
+          SceneCamera,
+          [optimizations, sized](const Scene& scene, Canvas& canvas) {
+            std::vector<long> rays = sized(canvas);
+            Canvas image(canvas.Width(), canvas.Height());
+            RenderSceneAdaptive(scene, 3, image, optimizations, &rays);
+            return rays;
+          },
+          17),
+  };
+}
+
+// Gives the figure named `name` its cost view, for the C key.
+void SetCostView(std::vector<cgfs::Figure>& figures, const std::string& name,
+                 const std::string& cost_view) {
+  for (cgfs::Figure& figure : figures) {
+    if (figure.name == name) {
+      figure.cost_view = cost_view;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
@@ -317,5 +399,10 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
                                 [optimizations](const Scene& scene, Canvas& canvas) {
                                   RenderSceneAdaptive(scene, 3, canvas, optimizations);
                                 }));
+  const std::vector<cgfs::Figure> costs = CostFigures(optimizations);
+  figures.insert(figures.end(), costs.begin(), costs.end());
+  SetCostView(figures, "sphere-field-10000", "sphere-field-10000-tests");
+  SetCostView(figures, "subsampling-thin-wires", "subsampling-thin-wires-searches");
+  SetCostView(figures, "supersampling-adaptive", "supersampling-adaptive-rays");
   return figures;
 }

@@ -19,6 +19,17 @@ Canvas RenderFigure(const Figure& figure, int width, int height, const View& vie
   return canvas;
 }
 
+int CostPartner(const std::vector<const Figure*>& figures, std::size_t index) {
+  const Figure& shown = *figures.at(index);
+  for (std::size_t i = 0; i < figures.size(); ++i) {
+    if ((!shown.cost_view.empty() && figures[i]->name == shown.cost_view) ||
+        figures[i]->cost_view == shown.name) {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
 std::string FormatView(const View& view) {
   std::ostringstream out;
   out.precision(17);  // every digit, so that the same view draws the same image

@@ -250,6 +250,11 @@ class Session {
       case SDLK_LEFT:
         Show((index_ + count - 1) % count);
         break;
+      case SDLK_c:
+        if (const int partner = CostPartner(figures_, index_); partner >= 0) {
+          Show(static_cast<std::size_t>(partner));
+        }
+        break;
       case SDLK_r:
         view_ = start_view_;
         Show(index_);

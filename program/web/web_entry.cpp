@@ -79,6 +79,20 @@ EMSCRIPTEN_KEEPALIVE int FigureHasCamera(int index) {
   return figure == nullptr ? -1 : figure->draw_from ? 1 : 0;
 }
 
+// The index of the figure the C key switches to from figure `index` (its cost view, or
+// the figure whose cost view it is), or -1.
+EMSCRIPTEN_KEEPALIVE int FigureCostPartner(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  if (figure == nullptr) {
+    return -1;
+  }
+  std::vector<const cgfs::Figure*> all;
+  for (const cgfs::Figure& each : ChapterFigures()) {
+    all.push_back(&each);
+  }
+  return cgfs::CostPartner(all, static_cast<std::size_t>(index));
+}
+
 // Draws figure `index` at width x height, from the camera's view where the figure has a
 // camera; the pixels, width x height x 4 bytes, then stand at Pixels(). 1, or 0 with
 // LastError() saying why.

@@ -92,6 +92,22 @@ TEST_CASE("supersampling-adaptive matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-adaptive");
 }
 
+TEST_CASE("sphere-field-10000-tests matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-10000-tests");
+}
+
+TEST_CASE("sphere-field-10000-tests-without-hierarchy matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "sphere-field-10000-tests-without-hierarchy");
+}
+
+TEST_CASE("subsampling-thin-wires-searches matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "subsampling-thin-wires-searches");
+}
+
+TEST_CASE("supersampling-adaptive-rays matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-adaptive-rays");
+}
+
 TEST_CASE("pinned pixels: the Death Star's crater has the small sphere's colour", "[figures]") {
   const Canvas canvas = RenderFigureNamed(Figures({}), "csg-death-star");
   const Rgb8 crater = canvas.GetPixel(-100, 90);

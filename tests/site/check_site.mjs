@@ -5,6 +5,8 @@
 //    frame is drawn at half size while it moves, the view shown after three keys is
 //    the one worked by hand, and the full frame after the drag equals what the native
 //    program draws with --view set to the view the page shows;
+//  - on chapter 5's page, C and the button beside the caption switch between a figure
+//    and its cost view;
 //  - a page asked for a figure or a view that does not exist says so and draws the
 //    chapter's first figure; the index draws a picture for every chapter;
 //  - every link of every page leads to a file of the site.
@@ -173,6 +175,26 @@ async function CheckEveryFigure(browser) {
   console.log(`every figure, drawn through the page's buttons, compared with its golden image: ${compared}`);
 }
 
+// The C key, and the button beside the caption, switch between a figure and its cost view.
+async function CheckCostKey(browser, chapter, figure, costView) {
+  await browser.Open(`${chapter}/index.html?figure=${figure}`);
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`);
+  const button = await browser.Evaluate("document.getElementById('cost').textContent");
+  if (button !== `${costView} (C)`) Fail(`${chapter}: ${figure}'s cost button says '${button}'`);
+  await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.body.focus(); })()");
+  await browser.Key('c');
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: C`);
+  if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${costView}.png`)))) {
+    Fail(`${chapter}: C on ${figure} did not show ${costView}`);
+  }
+  await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.getElementById('cost').click(); })()");
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the cost button`);
+  if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${figure}.png`)))) {
+    Fail(`${chapter}: the cost button on ${costView} did not go back to ${figure}`);
+  }
+  console.log(`${chapter}: C showed ${costView}, its button ${figure} again`);
+}
+
 async function CheckCamera(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
   // The page's first frame is drawn after it loads: waited for, or it could land after
@@ -295,6 +317,7 @@ try {
     CheckLinks();
     await CheckBadAddresses(browser);
     await CheckCamera(browser, '05-raytracer-extensions', 'fig-5-1-camera');
+    await CheckCostKey(browser, '05-raytracer-extensions', 'subsampling-thin-wires', 'subsampling-thin-wires-searches');
     await CheckCamera(browser, '15-rasterizer-extensions', 'everything');
     await CheckIndex(browser);
     await CheckEveryFigure(browser);

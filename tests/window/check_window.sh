@@ -12,6 +12,9 @@
 # --window says so in one line, exit status 2. Leaves screenshots in WORK_DIR. Skipped
 # without Xvfb and xdotool (CI installs them: scripts/setup). CGFS_WINDOW_FIGURES: the
 # figures to open with instead of the first two (a space-separated list).
+# CGFS_WINDOW_COST="FIGURE COST_VIEW": also a window opened on FIGURE and its cost view,
+# each elsewhere in the list: C shows the cost view, C again the figure, each saved
+# byte for byte its golden image.
 # CGFS_WINDOW_UNWRITABLE=1 (with a CAMERA_FIGURE): also a window whose output folder is a
 # file: S says in one line why it saved nothing, prints the moved view all the same, and
 # the window stays open.
@@ -192,6 +195,41 @@ for _ in $(seq 250); do
   [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
   sleep 0.02
 done
+
+if [ -n "${CGFS_WINDOW_COST:-}" ]; then
+  read -r figure cost_view <<<"$CGFS_WINDOW_COST"
+  # The cost view first in the list and the figure last, a figure between them: C
+  # goes by name, not to the next one.
+  between=$("$program" --list | cut -d' ' -f1 | grep -vx -e "$figure" -e "$cost_view" | head -1)
+  open_window "$work/cost.txt" --figure "$figure" --figure "$between" --figure "$cost_view" \
+    --output "$work/saved-cost"
+  if [ -z "$window" ]; then
+    cat "$work/cost.txt"
+    fail "no window for the C key${ended:+ (the program ended, exit status $ended)}"
+    exit 1
+  fi
+  xdotool windowfocus --sync "$window" key c s
+  saved_view() {  # NAME: waits until the program says it saved NAME.png; compares it
+    for _ in $(seq 3000); do
+      grep -q "^saved .*/$1.png" "$work/cost.txt" && break
+      sleep 0.02
+    done
+    cmp -s "$work/saved-cost/$1.png" "$golden/$1.png" && echo "ok: C showed $1, its golden image" \
+      || fail "C did not show $1 (or it differs from its golden image)"
+  }
+  saved_view "$cost_view"
+  xdotool key c s
+  saved_view "$figure"
+  xdotool key Escape
+  status=0
+  wait $program_pid || status=$?
+  program_pid=""
+  [ $status -eq 0 ] || fail "Esc after C: exit status $status, expected 0"
+  for _ in $(seq 250); do
+    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
+    sleep 0.02
+  done
+fi
 
 if [ -n "$camera" ] && [ "${CGFS_WINDOW_UNWRITABLE:-}" = 1 ]; then
   echo "a file, not a folder" >"$work/not-a-folder"

@@ -84,6 +84,9 @@ function Select(index) {
   figures.forEach((figure, i) => figure.button.setAttribute('aria-checked', i === index));
   Say('caption', figures[index].caption);
   Say('status', `drawing ${figures[index].name}…`);
+  const partner = figures[index].costPartner;
+  document.getElementById('cost').hidden = partner < 0;
+  if (partner >= 0) document.getElementById('cost').textContent = `${figures[partner].name} (C)`;
   ShowView();
   requestAnimationFrame(() => setTimeout(() => Draw(true)));
 }
@@ -105,6 +108,8 @@ function OnKey(event) {
   const key = event.key.length === 1 ? event.key.toLowerCase() : event.key;
   if (key === 'ArrowLeft' || key === 'ArrowRight') {
     Select((shown + (key === 'ArrowLeft' ? figures.length - 1 : 1)) % figures.length);
+  } else if (key === 'c' && figures[shown].costPartner >= 0) {
+    Select(figures[shown].costPartner);
   } else if (figures[shown].hasCamera && kCameraKeys.includes(key)) {
     chapter._PressCameraKey(kCameraKeys.indexOf(key));
     CameraMoved();
@@ -174,7 +179,8 @@ function Start(module) {
   const list = document.getElementById('figures');
   for (let i = 0; i < chapter._FigureCount(); ++i) {
     const figure = {name: Text(chapter._FigureName(i)), caption: Text(chapter._FigureCaption(i)),
-                    hasCamera: chapter._FigureHasCamera(i) === 1};
+                    hasCamera: chapter._FigureHasCamera(i) === 1,
+                    costPartner: chapter._FigureCostPartner(i)};
     figure.button = document.createElement('button');
     figure.button.type = 'button';
     figure.button.textContent = figure.name;
@@ -183,6 +189,7 @@ function Start(module) {
     list.append(figure.button);
     figures.push(figure);
   }
+  document.getElementById('cost').addEventListener('click', () => Select(figures[shown].costPartner));
   document.getElementById('reset').addEventListener('click', () => { chapter._ResetView(); CameraMoved(); });
   document.addEventListener('keydown', OnKey);
   FollowDrags();

@@ -205,6 +205,7 @@ class Site:
 <div id="figures" role="radiogroup" aria-label="figures"></div>
 <canvas id="canvas" width="600" height="600"></canvas>
 <p id="caption"></p>
+<p><button id="cost" type="button" hidden title="where the work goes, pixel by pixel"></button></p>
 <p id="status">Loading the chapter's code…</p>
 <p id="problem" hidden></p>
 <div id="camera" hidden>

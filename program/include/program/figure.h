@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "cgfs/canvas.h"
 #include "cgfs/view.h"
@@ -16,7 +17,14 @@ struct Figure {
   std::function<void(Canvas&)> draw;
   // The same from a moved camera; empty for a figure without a camera to move.
   std::function<void(Canvas&, const View&)> draw_from = {};
+  // The figure that shows where this one's work goes (program/cost_view.h), which the
+  // C key switches to; empty if there is none.
+  std::string cost_view = {};
 };
+
+// The index in `figures` of the figure the C key switches to from figures[index]: its
+// cost view, or the figure whose cost view it is; -1 when neither is in the list.
+int CostPartner(const std::vector<const Figure*>& figures, std::size_t index);
 
 // Draws one figure on a fresh white canvas of the given size, from `view` (which must
 // be the chapter's own for a figure without a camera: cgfs::UsageError otherwise).

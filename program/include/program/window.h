@@ -12,8 +12,9 @@ namespace cgfs {
 
 // What the window does with the keys, as H or F1 prints it.
 inline constexpr char kWindowKeys[] =
-    "keys: Left / Right the previous / next figure, S save it, R back to the chapter's view, "
-    "H or F1 these keys, Esc quit; where the figure has a camera: Up / Down forward / back, "
+    "keys: Left / Right the previous / next figure, C its cost view and back (where it has "
+    "one), S save it, R back to the chapter's view, H or F1 these keys, Esc quit; where the "
+    "figure has a camera: Up / Down forward / back, "
     "A / D left / right, PageUp / PageDown up / down, Q / E or dragging the mouse turn "
     "left / right, Home / End or dragging the mouse look up / down";
 

@@ -1,0 +1,187 @@
+// The cost views (cost.h): their counts against counts made another way, their
+// captions' numbers, and what they draw (their golden images: figures_test.cpp).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "cost.h"
+#include "golden.h"
+#include "printing.h"
+#include "program/cost_view.h"
+#include "sampling.h"
+#include "scenes.h"
+
+using cgfs::test::FindFigure;
+using cgfs::test::RenderFigureNamed;
+
+namespace {
+
+// 1234567 as a caption writes it: "1 234 567".
+std::string Spaced(long n) {
+  std::string digits = std::to_string(n), spaced;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) {
+      spaced += ' ';
+    }
+    spaced += digits[i];
+  }
+  return spaced;
+}
+
+long Total(const std::vector<long>& counts) {
+  return std::accumulate(counts.begin(), counts.end(), 0L);
+}
+
+long Max(const std::vector<long>& counts) {
+  return *std::max_element(counts.begin(), counts.end());
+}
+
+// The caption of the figure says "<total> in all, at most <max>".
+void CheckCaption(const std::string& name, long total, long max) {
+  const std::string caption = FindFigure(Figures({}), name).caption;
+  INFO(name << ": " << caption << " (counted: " << Spaced(total) << " in all, at most "
+            << Spaced(max) << ")");
+  CHECK(caption.find(Spaced(total) + " in all") != std::string::npos);
+  CHECK(caption.find("at most " + Spaced(max)) != std::string::npos);
+}
+
+// The figure shows each pixel's count through the ramp, above the scale strip.
+void CheckDrawn(const std::string& name, const std::vector<long>& counts, long scale_max) {
+  const Canvas canvas = RenderFigureNamed(Figures({}), name);
+  const cgfs::Image& image = canvas.GetImage();
+  const int above_strip = 600 - cgfs::CostStripHeight(600) - 1;
+  long wrong = 0;
+  for (int row = 0; row < above_strip; ++row) {
+    for (int column = 0; column < 600; ++column) {
+      const double count = static_cast<double>(counts[row * 600 + column]);
+      const bool differs = image.At(column, row) != cgfs::CostRamp(cgfs::CostPosition(
+                                                        count, static_cast<double>(scale_max)));
+      if (differs && wrong == 0) {
+        UNSCOPED_INFO("first wrong pixel: column " << column << ", row " << row);
+      }
+      wrong += differs;
+    }
+  }
+  CHECK(wrong == 0);
+}
+
+}  // namespace
+
+TEST_CASE("Spaced writes numbers as the captions do", "[cost]") {
+  CHECK(Spaced(7) == "7");
+  CHECK(Spaced(1000) == "1 000");
+  CHECK(Spaced(3600000000) == "3 600 000 000");
+}
+
+TEST_CASE("without the hierarchy every camera ray tests all 10 000 spheres and the ground",
+          "[cost]") {
+  Optimizations loop;
+  const Canvas canvas(600, 600);
+  const TestsPerPixel tests = PrimaryRayTests(SceneSphereField(10000), canvas, loop);
+  // 10 001 objects (the spheres and the ground) for each of 600 x 600 rays, no boxes.
+  CHECK(Total(tests.objects) == 10001L * 600 * 600);
+  CHECK(Max(tests.objects) == 10001);
+  CHECK(Total(tests.boxes) == 0);
+  CheckCaption("sphere-field-10000-tests-without-hierarchy", 10001L * 600 * 600, 10001);
+  CheckDrawn("sphere-field-10000-tests-without-hierarchy", tests.objects, 10001);
+}
+
+TEST_CASE("through the hierarchy, the tests per camera ray are Bvh::Closest's own count",
+          "[cost]") {
+  Optimizations hierarchy;
+  hierarchy.bvh = true;
+  Scene scene = SceneSphereField(10000);
+  const Canvas canvas(600, 600);
+  const TestsPerPixel tests = PrimaryRayTests(scene, canvas, hierarchy);
+  // The same searches made here, ray by ray, as the hierarchy's tests make them.
+  PrepareScene(scene, hierarchy);
+  REQUIRE(scene.bvh != nullptr);
+  Bvh::Tests total;
+  std::vector<long> both(600 * 600);
+  for (int x = -300; x < 300; ++x) {
+    for (int y = -300; y < 300; ++y) {
+      Bvh::Tests ray;
+      int object = -1;
+      scene.bvh->Closest(
+          MakeRay(scene.camera.position, CameraRayDirection(x, y, canvas, scene), scene), 1,
+          cgfs::kInf, object, &ray);
+      total.boxes += ray.boxes;
+      total.objects += ray.objects;
+      both[(299 - y) * 600 + (x + 300)] = ray.boxes + ray.objects;
+    }
+  }
+  CHECK(Total(tests.boxes) == total.boxes);
+  CHECK(Total(tests.objects) == total.objects);
+  // Every ray tests at least the root's box, and a ray that hits something tested it.
+  CHECK(*std::min_element(tests.boxes.begin(), tests.boxes.end()) >= 1);
+  CheckCaption("sphere-field-10000-tests", Total(both), Max(both));
+  CheckDrawn("sphere-field-10000-tests", both, 10001);
+  UNSCOPED_INFO("boxes " << total.boxes << ", objects " << total.objects);
+}
+
+TEST_CASE("subsampling searches the scene for the even pixels and where neighbours disagree",
+          "[cost]") {
+  // Worked apart from the renderer: what the traced pixels' camera rays hit, and the
+  // rule of sampling.h for each pixel in between.
+  const Scene scene = SceneThinWires();
+  Scene prepared = scene;
+  PrepareScene(prepared, AllOptimizations());
+  const Canvas canvas(600, 600);
+  const auto hit_at = [&](int x, int y) {
+    if (x < -300 || x >= 300 || y < -300 || y >= 300) {
+      return -3;
+    }
+    const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
+    return ClosestIntersection(prepared.camera.position, D, 1, cgfs::kInf, prepared).object;
+  };
+  std::vector<long> searches(600 * 600, 0);
+  for (int x = -300; x < 300; ++x) {
+    for (int y = -300; y < 300; ++y) {
+      const int dx = (x + 300) % 2, dy = (y + 300) % 2;
+      long searched = 1;
+      if (dx != 0 || dy != 0) {
+        const int a = hit_at(x - dx, y - dy), b = hit_at(x + dx, y - dy),
+                  c = hit_at(x - dx, y + dy), d = hit_at(x + dx, y + dy);
+        const bool agree = a == b && b == c && c == d && a != -3;
+        const bool hits_it =
+            agree && a >= 0 &&
+            prepared.objects[a]
+                    ->Intersect(MakeRay(prepared.camera.position,
+                                        CameraRayDirection(x, y, canvas, prepared), prepared),
+                                1, cgfs::kInf)
+                    .primitive != nullptr;
+        searched = (agree && a == -1) || hits_it ? 0 : 1;
+      }
+      searches[(299 - y) * 600 + (x + 300)] = searched;
+    }
+  }
+  Canvas image(600, 600);
+  std::vector<long> counted(600 * 600, -1);
+  RenderSceneSubsampled(scene, 0, image, AllOptimizations(), &counted);
+  CHECK(counted == searches);
+  CHECK(Total(searches) >= 300 * 300);
+  CheckCaption("subsampling-thin-wires-searches", Total(searches), 1);
+  CheckDrawn("subsampling-thin-wires-searches", searches, 1);
+}
+
+TEST_CASE("adaptive supersampling traces 1 ray, or 1 + 16 where it subdivides", "[cost]") {
+  Canvas image(600, 600);
+  std::vector<long> rays(600 * 600, -1);
+  const long subdivided = RenderSceneAdaptive(SceneCamera(), 3, image, AllOptimizations(), &rays);
+  CHECK(Total(rays) == 600L * 600 + 16 * subdivided);
+  CHECK(std::count(rays.begin(), rays.end(), 17L) == subdivided);
+  CHECK(std::count(rays.begin(), rays.end(), 1L) == 600L * 600 - subdivided);
+  CheckCaption("supersampling-adaptive-rays", Total(rays), 17);
+  CheckDrawn("supersampling-adaptive-rays", rays, 17);
+}
+
+TEST_CASE("the C key's pairs: each cost view belongs to a figure of the chapter", "[cost]") {
+  const std::vector<cgfs::Figure> figures = Figures({});
+  CHECK(FindFigure(figures, "sphere-field-10000").cost_view == "sphere-field-10000-tests");
+  CHECK(FindFigure(figures, "subsampling-thin-wires").cost_view ==
+        "subsampling-thin-wires-searches");
+  CHECK(FindFigure(figures, "supersampling-adaptive").cost_view == "supersampling-adaptive-rays");
+}
