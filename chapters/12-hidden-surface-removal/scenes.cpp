@@ -4,6 +4,9 @@
 #include <functional>
 #include <numbers>
 #include <string>
+#include <vector>
+
+#include "program/cost_view.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
@@ -197,6 +200,27 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
           }};
 }
 
+// The overdraw of a figure: how many times RenderScene with `method` writes each
+// pixel (Canvas::CountWrites), drawn through the cost ramp from 0 to `scale_max`
+// (program/cost_view.h); the cost view of the figure named `figure`.
+cgfs::Figure OverdrawFigure(const std::string& figure, const std::string& caption,
+                            std::function<Scene()> scene, const HiddenSurfaceRemoval& method,
+                            long scale_max) {
+  const auto draw = [method, scale_max](const Scene& drawn, Canvas& canvas) {
+    std::vector<long> writes(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+    canvas.CountWrites(&writes);
+    RenderScene(drawn, canvas, method);
+    canvas.CountWrites(nullptr);
+    cgfs::DrawCost(canvas, writes, scale_max);
+  };
+  return {figure + "-overdraw", caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
+          [scene, draw](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            draw(moved, canvas);
+          }};
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures() {
@@ -208,7 +232,9 @@ std::vector<cgfs::Figure> Figures() {
   const HiddenSurfaceRemoval depth{.cull_back_faces = false};
   const HiddenSurfaceRemoval culled{};
   const HiddenSurfaceRemoval outlines{.outlines = true};
-  return {
+  // One scale for the three overdraw views, so that they compare at a glance.
+  constexpr long kOverdrawScale = 5;
+  std::vector<cgfs::Figure> figures = {
       SceneFigure("fig-12-1-model-order",
                   "Figure 10-10's cubes filled, in model order: back faces paint over front faces",
                   SceneTransformedCubes, model_order),
@@ -255,5 +281,25 @@ std::vector<cgfs::Figure> Figures() {
       SceneFigure("open-box-culled",
                   "the open box culled as if it were closed: its inside faces are missing",
                   SceneOpenBoxSaidClosed, culled),
+      OverdrawFigure(
+          "painters-algorithm-cubes",
+          "the painter's overdraw, pixels written per pixel on a scale to 5: 200 519 in all, "
+          "at most 5",
+          SceneTransformedCubes, painters, kOverdrawScale),
+      OverdrawFigure("fig-12-4-depth-buffer",
+                     "the depth buffer's overdraw: 137 388 in all, at most 3",
+                     SceneTransformedCubes, depth, kOverdrawScale),
+      OverdrawFigure("back-face-culling",
+                     "the overdraw with back faces culled: 98 818 in all, at most 2",
+                     SceneTransformedCubes, culled, kOverdrawScale),
   };
+  // The C key goes from a figure to the one of its name and "-overdraw".
+  for (cgfs::Figure& figure : figures) {
+    for (const cgfs::Figure& view : figures) {
+      if (view.name == figure.name + "-overdraw") {
+        figure.cost_view = view.name;
+      }
+    }
+  }
+  return figures;
 }

@@ -34,6 +34,9 @@ int CostStripHeight(int canvas_height) {
 
 namespace {
 
+// The largest scale whose colours DrawCost works out in advance.
+constexpr long kLargestScale = 1 << 20;
+
 void Put(Canvas& canvas, int column, int row, Rgb8 value) {
   canvas.PutPixel(column - canvas.Width() / 2, canvas.Height() / 2 - 1 - row,
                   {value.r, value.g, value.b});
@@ -56,11 +59,20 @@ void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
   if (counts.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
     throw std::invalid_argument("DrawCost: one count per pixel is needed");
   }
+  // Each count's colour worked out once (counts above the scale all get its top's).
+  const long top = std::max(scale_max, 0L);
+  std::vector<Rgb8> colors(static_cast<std::size_t>(std::min(top, kLargestScale)) + 1);
+  for (std::size_t count = 0; count < colors.size(); ++count) {
+    colors[count] =
+        CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max)));
+  }
   for (int row = 0; row < height; ++row) {
     for (int column = 0; column < width; ++column) {
       const long count = counts[static_cast<std::size_t>(row) * width + column];
       Put(canvas, column, row,
-          CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max))));
+          count >= 0 && count < static_cast<long>(colors.size())
+              ? colors[static_cast<std::size_t>(count)]
+              : CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max))));
     }
   }
   const int strip = CostStripHeight(height);

@@ -3,72 +3,22 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <numeric>
 #include <string>
 #include <vector>
 
 #include "cost.h"
+#include "cost_checks.h"
 #include "golden.h"
 #include "printing.h"
-#include "program/cost_view.h"
 #include "sampling.h"
 #include "scenes.h"
 
+using cgfs::test::CheckCaption;
+using cgfs::test::CheckDrawn;
 using cgfs::test::FindFigure;
-using cgfs::test::RenderFigureNamed;
-
-namespace {
-
-// 1234567 as a caption writes it: "1 234 567".
-std::string Spaced(long n) {
-  std::string digits = std::to_string(n), spaced;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) {
-      spaced += ' ';
-    }
-    spaced += digits[i];
-  }
-  return spaced;
-}
-
-long Total(const std::vector<long>& counts) {
-  return std::accumulate(counts.begin(), counts.end(), 0L);
-}
-
-long Max(const std::vector<long>& counts) {
-  return *std::max_element(counts.begin(), counts.end());
-}
-
-// The caption of the figure says "<total> in all, at most <max>".
-void CheckCaption(const std::string& name, long total, long max) {
-  const std::string caption = FindFigure(Figures({}), name).caption;
-  INFO(name << ": " << caption << " (counted: " << Spaced(total) << " in all, at most "
-            << Spaced(max) << ")");
-  CHECK(caption.find(Spaced(total) + " in all") != std::string::npos);
-  CHECK(caption.find("at most " + Spaced(max)) != std::string::npos);
-}
-
-// The figure shows each pixel's count through the ramp, above the scale strip.
-void CheckDrawn(const std::string& name, const std::vector<long>& counts, long scale_max) {
-  const Canvas canvas = RenderFigureNamed(Figures({}), name);
-  const cgfs::Image& image = canvas.GetImage();
-  const int above_strip = 600 - cgfs::CostStripHeight(600) - 1;
-  long wrong = 0;
-  for (int row = 0; row < above_strip; ++row) {
-    for (int column = 0; column < 600; ++column) {
-      const double count = static_cast<double>(counts[row * 600 + column]);
-      const bool differs = image.At(column, row) != cgfs::CostRamp(cgfs::CostPosition(
-                                                        count, static_cast<double>(scale_max)));
-      if (differs && wrong == 0) {
-        UNSCOPED_INFO("first wrong pixel: column " << column << ", row " << row);
-      }
-      wrong += differs;
-    }
-  }
-  CHECK(wrong == 0);
-}
-
-}  // namespace
+using cgfs::test::Max;
+using cgfs::test::Spaced;
+using cgfs::test::Total;
 
 TEST_CASE("Spaced writes numbers as the captions do", "[cost]") {
   CHECK(Spaced(7) == "7");
@@ -85,8 +35,9 @@ TEST_CASE("without the hierarchy every camera ray tests all 10 000 spheres and t
   CHECK(Total(tests.objects) == 10001L * 600 * 600);
   CHECK(Max(tests.objects) == 10001);
   CHECK(Total(tests.boxes) == 0);
-  CheckCaption("sphere-field-10000-tests-without-hierarchy", 10001L * 600 * 600, 10001);
-  CheckDrawn("sphere-field-10000-tests-without-hierarchy", tests.objects, 10001);
+  CheckCaption(Figures({}), "sphere-field-10000-tests-without-hierarchy", 10001L * 600 * 600,
+               10001);
+  CheckDrawn(Figures({}), "sphere-field-10000-tests-without-hierarchy", tests.objects, 10001);
 }
 
 TEST_CASE("through the hierarchy, the tests per camera ray are Bvh::Closest's own count",
@@ -117,8 +68,8 @@ TEST_CASE("through the hierarchy, the tests per camera ray are Bvh::Closest's ow
   CHECK(Total(tests.objects) == total.objects);
   // Every ray tests at least the root's box, and a ray that hits something tested it.
   CHECK(*std::min_element(tests.boxes.begin(), tests.boxes.end()) >= 1);
-  CheckCaption("sphere-field-10000-tests", Total(both), Max(both));
-  CheckDrawn("sphere-field-10000-tests", both, 10001);
+  CheckCaption(Figures({}), "sphere-field-10000-tests", Total(both), Max(both));
+  CheckDrawn(Figures({}), "sphere-field-10000-tests", both, 10001);
   UNSCOPED_INFO("boxes " << total.boxes << ", objects " << total.objects);
 }
 
@@ -163,8 +114,8 @@ TEST_CASE("subsampling searches the scene for the even pixels and where neighbou
   RenderSceneSubsampled(scene, 0, image, AllOptimizations(), &counted);
   CHECK(counted == searches);
   CHECK(Total(searches) >= 300 * 300);
-  CheckCaption("subsampling-thin-wires-searches", Total(searches), 1);
-  CheckDrawn("subsampling-thin-wires-searches", searches, 1);
+  CheckCaption(Figures({}), "subsampling-thin-wires-searches", Total(searches), 1);
+  CheckDrawn(Figures({}), "subsampling-thin-wires-searches", searches, 1);
 }
 
 TEST_CASE("adaptive supersampling traces 1 ray, or 1 + 16 where it subdivides", "[cost]") {
@@ -174,8 +125,8 @@ TEST_CASE("adaptive supersampling traces 1 ray, or 1 + 16 where it subdivides", 
   CHECK(Total(rays) == 600L * 600 + 16 * subdivided);
   CHECK(std::count(rays.begin(), rays.end(), 17L) == subdivided);
   CHECK(std::count(rays.begin(), rays.end(), 1L) == 600L * 600 - subdivided);
-  CheckCaption("supersampling-adaptive-rays", Total(rays), 17);
-  CheckDrawn("supersampling-adaptive-rays", rays, 17);
+  CheckCaption(Figures({}), "supersampling-adaptive-rays", Total(rays), 17);
+  CheckDrawn(Figures({}), "supersampling-adaptive-rays", rays, 17);
 }
 
 TEST_CASE("the C key's pairs: each cost view belongs to a figure of the chapter", "[cost]") {

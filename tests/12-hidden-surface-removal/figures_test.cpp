@@ -223,3 +223,15 @@ TEST_CASE("open-box matches its golden image", "[golden]") {
 TEST_CASE("open-box-culled matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "open-box-culled");
 }
+
+TEST_CASE("painters-algorithm-cubes-overdraw matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "painters-algorithm-cubes-overdraw");
+}
+
+TEST_CASE("fig-12-4-depth-buffer-overdraw matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-12-4-depth-buffer-overdraw");
+}
+
+TEST_CASE("back-face-culling-overdraw matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures(), "back-face-culling-overdraw");
+}

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
+#include <vector>
 
 #include "cgfs/canvas.h"
 
@@ -69,4 +70,20 @@ TEST_CASE("canvas sizes must be positive and even", "[canvas]") {
 TEST_CASE("GetPixel refuses a pixel off the canvas", "[canvas]") {
   const Canvas canvas(4, 4);
   CHECK_THROWS_AS(canvas.GetPixel(2, 0), std::out_of_range);
+}
+
+TEST_CASE("CountWrites counts each PutPixel on the canvas at its pixel, until it is stopped",
+          "[canvas]") {
+  Canvas canvas(4, 2);
+  std::vector<long> counts(8, 0);
+  canvas.CountWrites(&counts);
+  canvas.PutPixel(-2, 0, cgfs::kRed);  // column 0, row 0
+  canvas.PutPixel(-2, 0, cgfs::kBlue);
+  canvas.PutPixel(1, -1, cgfs::kRed);  // column 3, row 1
+  canvas.PutPixel(2, 0, cgfs::kRed);   // off the canvas: not counted
+  canvas.CountWrites(nullptr);
+  canvas.PutPixel(-2, 0, cgfs::kRed);
+  CHECK(counts == std::vector<long>{2, 0, 0, 0, 0, 0, 0, 1});
+  std::vector<long> too_few(7, 0);
+  CHECK_THROWS_AS(canvas.CountWrites(&too_few), std::invalid_argument);
 }

@@ -7,7 +7,9 @@
 // Sizes are even so that the centre sits between four pixels, as in the book.
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "cgfs/color.h"
 #include "cgfs/image.h"
@@ -46,8 +48,17 @@ class Canvas {
     if (const std::optional<ScreenPoint> screen = ToScreen(x, y)) {
       image_.Set(screen->column, screen->row,
                  {ToChannel(color.r), ToChannel(color.g), ToChannel(color.b)});
+      if (write_counts_ != nullptr) {
+        ++(*write_counts_)[static_cast<std::size_t>(screen->row) * Width() + screen->column];
+      }
     }
   }
+
+  // How often each pixel is drawn over (the rasterizer's overdraw): from here on every
+  // PutPixel that lands on the canvas adds one to its pixel's entry of `counts`, row by
+  // row from the top (Width() x Height() entries, or std::invalid_argument), until
+  // CountWrites(nullptr). A copy of the canvas counts into the same vector.
+  void CountWrites(std::vector<long>* counts);
 
   // What PutPixel stored at (x, y), in canvas coordinates. (x, y) must be on the canvas.
   Rgb8 GetPixel(int x, int y) const;
@@ -56,6 +67,7 @@ class Canvas {
 
  private:
   Image image_;
+  std::vector<long>* write_counts_ = nullptr;
 };
 
 }  // namespace cgfs

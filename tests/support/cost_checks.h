@@ -1,0 +1,71 @@
+// Checks of the chapters' cost views (program/cost_view.h): what a caption says of its
+// counts, and that the figure draws each pixel's count through the ramp.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "golden.h"
+#include "program/cost_view.h"
+#include "program/figure.h"
+
+namespace cgfs::test {
+
+// 1234567 as a caption writes it: "1 234 567".
+inline std::string Spaced(long n) {
+  const std::string digits = std::to_string(n);
+  std::string spaced;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) {
+      spaced += ' ';
+    }
+    spaced += digits[i];
+  }
+  return spaced;
+}
+
+inline long Total(const std::vector<long>& counts) {
+  return std::accumulate(counts.begin(), counts.end(), 0L);
+}
+
+inline long Max(const std::vector<long>& counts) {
+  return *std::max_element(counts.begin(), counts.end());
+}
+
+// The caption of figure `name` says "<total> in all, at most <max>".
+inline void CheckCaption(const std::vector<Figure>& figures, const std::string& name, long total,
+                         long max) {
+  const std::string caption = FindFigure(figures, name).caption;
+  INFO(name << ": " << caption << " (counted: " << Spaced(total) << " in all, at most "
+            << Spaced(max) << ")");
+  CHECK(caption.find(Spaced(total) + " in all") != std::string::npos);
+  CHECK(caption.find("at most " + Spaced(max)) != std::string::npos);
+}
+
+// Figure `name`, at the golden size, shows each pixel's count (row by row from the
+// top) through the ramp with `scale_max` at its top, above the scale strip.
+inline void CheckDrawn(const std::vector<Figure>& figures, const std::string& name,
+                       const std::vector<long>& counts, long scale_max) {
+  const Canvas canvas = RenderFigureNamed(figures, name);
+  const Image& image = canvas.GetImage();
+  const int above_strip = image.Height() - CostStripHeight(image.Height()) - 1;
+  long wrong = 0;
+  for (int row = 0; row < above_strip; ++row) {
+    for (int column = 0; column < image.Width(); ++column) {
+      const double count = static_cast<double>(counts[row * image.Width() + column]);
+      const bool differs =
+          image.At(column, row) != CostRamp(CostPosition(count, static_cast<double>(scale_max)));
+      if (differs && wrong == 0) {
+        UNSCOPED_INFO(name << ": first wrong pixel: column " << column << ", row " << row);
+      }
+      wrong += differs;
+    }
+  }
+  CHECK(wrong == 0);
+}
+
+}  // namespace cgfs::test
