@@ -5,6 +5,9 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include "program/cost_view.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
 // two triangles have its normal at every corner. "Painting a Crate": each face's first
@@ -183,6 +186,62 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
           }};
 }
 
+// The mip-level view's texture: the levels of `like`, of the same sizes, with every
+// texel of level k (k, 1, 0). Lit by an ambient light of 1 alone, a pixel's red channel
+// is then the level SampleTexture read it from (green 1: the pixel is textured), the
+// classic tinted view with numbers for tints.
+std::shared_ptr<const MipmappedTexture> LevelNumbers(const MipmappedTexture& like) {
+  auto numbered = std::make_shared<MipmappedTexture>();
+  for (std::size_t k = 0; k < like.levels.size(); ++k) {
+    const Texture& level = like.levels[k];
+    numbered->levels.push_back(
+        {level.width, level.height,
+         std::vector<Color>(level.texels.size(), Color(static_cast<double>(k), 1, 0))});
+  }
+  return numbered;
+}
+
+// The mip level each pixel of `scene` reads with `shading`, -1 where no texture is
+// read: the scene drawn with its models' textures numbered (LevelNumbers), then read back.
+std::vector<long> MipLevelsRead(Scene scene, const Shading& shading, Canvas& canvas) {
+  std::vector<std::shared_ptr<const MipmappedTexture>> textures;
+  std::vector<std::shared_ptr<Model>> models;
+  for (Instance& instance : scene.instances) {
+    auto model = std::make_shared<Model>(*instance.model);
+    if (model->texture != nullptr) {
+      textures.push_back(LevelNumbers(*model->texture));
+      model->texture = textures.back().get();
+    }
+    instance.model = model.get();
+    models.push_back(std::move(model));
+  }
+  scene.lights = {{LightType::kAmbient, 1.0, {}, {}}};
+  RenderScene(scene, canvas, shading);
+  std::vector<long> levels;
+  for (int row = 0; row < canvas.Height(); ++row) {
+    for (int column = 0; column < canvas.Width(); ++column) {
+      const cgfs::Rgb8 pixel = canvas.GetImage().At(column, row);
+      levels.push_back(pixel.g == 1 && pixel.b == 0 ? pixel.r : -1);
+    }
+  }
+  return levels;
+}
+
+// The mip-level view of a scene drawn with `shading`: the level each pixel reads, on
+// the cost ramp from 0 to `scale_max` (program/cost_view.h).
+cgfs::Figure MipLevelFigure(const std::string& name, const std::string& caption,
+                            std::function<Scene()> scene, const Shading& shading, long scale_max) {
+  const auto draw = [shading, scale_max](Scene drawn, Canvas& canvas) {
+    cgfs::DrawCost(canvas, MipLevelsRead(std::move(drawn), shading, canvas), scale_max);
+  };
+  return {name, caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
+          [scene, draw](Canvas& canvas, const cgfs::View& view) {
+            Scene moved = scene();
+            moved.camera = MovedCamera(moved.camera, view);
+            draw(std::move(moved), canvas);
+          }};
+}
+
 }  // namespace
 
 namespace {
@@ -214,7 +273,7 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
     return SceneCrateCloseUp(*close_up_crate);
   };
   const std::function<Scene()> minified = SceneMinifiedCheckerboard;
-  return {
+  std::vector<cgfs::Figure> figures = {
       SceneFigure(
           "fig-14-3-affine",
           "three crates, u and v interpolated linearly: the textures bend along the diagonals",
@@ -240,5 +299,11 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
        [crate_texture](Canvas& canvas) { DrawMipChain(*crate_texture, canvas); }},
       SceneFigure("crates-trilinear", "the crates with everything: perspective-correct, trilinear",
                   crates, Shading{}),
+      MipLevelFigure("crates-trilinear-mip-levels",
+                     "the mip level each pixel of the crates reads, the nearer of trilinear's two, "
+                     "0 to 8: 131 055 in all, at most 5",
+                     crates, WithTexturing(kPerspectiveCorrect, kMipmap), 8),
   };
+  figures[9].cost_view = "crates-trilinear-mip-levels";  // C: crates-trilinear's levels
+  return figures;
 }

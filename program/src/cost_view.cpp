@@ -70,7 +70,8 @@ void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
     for (int column = 0; column < width; ++column) {
       const long count = counts[static_cast<std::size_t>(row) * width + column];
       Put(canvas, column, row,
-          count >= 0 && count < static_cast<long>(colors.size())
+          count < 0 ? kCostNothing
+          : count < static_cast<long>(colors.size())
               ? colors[static_cast<std::size_t>(count)]
               : CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max))));
     }

@@ -136,3 +136,7 @@ TEST_CASE("fig-14-12-mip-chain matches its golden image", "[golden]") {
 TEST_CASE("crates-trilinear matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "crates-trilinear");
 }
+
+TEST_CASE("crates-trilinear-mip-levels matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "crates-trilinear-mip-levels");
+}

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 
+#include "cast_uv.h"
 #include "figure_checks.h"
 #include "scenes.h"
 
@@ -19,30 +20,12 @@ using cgfs::test::CastHit;
 using cgfs::test::CastImage;
 using cgfs::test::CastScene;
 using cgfs::test::CastSceneOf;
+using cgfs::test::CastUV;
 using cgfs::test::Describe;
 using cgfs::test::LabelImage;
 using cgfs::test::LabelsOf;
 
 namespace {
-
-// The texture coordinates of the point a cast ray hit: its triangle's corners' (u, v)
-// weighted by the point's barycentric coordinates (exact, whatever the perspective).
-glm::dvec2 CastUV(const Scene& scene, const CastScene& cast_scene, const CastHit& hit) {
-  const Triangle& T = scene.instances[static_cast<std::size_t>(hit.instance)]
-                          .model->triangles[static_cast<std::size_t>(hit.triangle)];
-  const cgfs::test::CastTriangle* placed =
-      &cast_scene.triangles[cast_scene.instances[static_cast<std::size_t>(hit.instance)].first +
-                            static_cast<std::size_t>(hit.triangle)];
-  const glm::dvec3 e1 = placed->b - placed->a;
-  const glm::dvec3 e2 = placed->c - placed->a;
-  const glm::dvec3 p = hit.point - placed->a;
-  const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-  const double p1 = glm::dot(p, e1), p2 = glm::dot(p, e2);
-  const double det = d11 * d22 - d12 * d12;
-  const double b1 = (d22 * p1 - d12 * p2) / det;
-  const double b2 = (d11 * p2 - d12 * p1) / det;
-  return (1 - b1 - b2) * T.uvs[0] + b1 * T.uvs[1] + b2 * T.uvs[2];
-}
 
 // A 64 x 64 texture whose texel (i, j) is (4i, 4j, 128): a pixel says which texel it shows.
 const MipmappedTexture& CoordinateTexture() {

@@ -1,6 +1,7 @@
 // Counts per pixel as a picture (program/cost_view.h).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -72,6 +73,14 @@ TEST_CASE("DrawCost draws each pixel's count and a strip with the scale", "[cost
     CHECK(image.At(step * 10 + 9, 100 - strip) == expected);
   }
   CHECK_THROWS_AS(cgfs::DrawCost(canvas, std::vector<long>(7), 4), std::invalid_argument);
+  counts[1] = -1;  // nothing to count there
+  cgfs::DrawCost(canvas, counts, 4);
+  CHECK(canvas.GetImage().At(1, 0) == cgfs::kCostNothing);
+  // A grey the ramp never takes: its hue is strongest halfway, where its brightness is.
+  for (int i = 0; i <= 1000; ++i) {
+    const Rgb8 c = CostRamp(i / 1000.0);
+    CHECK(std::max({std::abs(c.r - 128), std::abs(c.g - 128), std::abs(c.b - 128)}) > 8);
+  }
 }
 
 TEST_CASE("above kCostStepsMax the strip runs smoothly from black to white", "[cost]") {

@@ -28,8 +28,10 @@ int CostStripHeight(int canvas_height);
 // CostStripHeight() high across the bottom, under a white line, that runs from 0 at
 // the left to `scale_max` at the right. Up to kCostStepsMax it shows each whole count
 // as a block of equal width; above, the ramp runs smoothly. Counts above scale_max
-// are drawn as scale_max.
+// are drawn as scale_max, and a negative count, which stands for nothing there to count
+// (no texture on the pixel, say), as kCostNothing, a grey the ramp never takes.
 inline constexpr long kCostStepsMax = 16;
+inline constexpr Rgb8 kCostNothing{128, 128, 128};
 void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max);
 
 }  // namespace cgfs
