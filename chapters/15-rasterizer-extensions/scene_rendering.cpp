@@ -105,12 +105,15 @@ std::vector<DrawnInstance> ClipAndCull(const CameraSpaceScene& scene, const Maps
 // closed occluders counted into the stencil (if `counting` is given), and the scene lit
 // by that light alone added where the stencil is 0. The sum is clamped once, onto the
 // canvas. `unclipped` is the scene in camera space, before clipping: a volume is cast
-// by the whole occluder, seen or not.
+// by the whole occluder, seen or not. The stencil's writes are counted into
+// `stencil_writes` if given.
 void RenderInPasses(const CameraSpaceScene& unclipped, const Lighting& lighting,
-                    const ShadowVolumeCounting* counting, const std::vector<Plane>& planes,
+                    const ShadowVolumeCounting* counting, std::vector<long>* stencil_writes,
+                    const std::vector<Plane>& planes,
                     const std::function<void(const Lighting&)>& draw_all, Frame& frame) {
   AccumulationBuffer sum(frame.canvas);
   StencilBuffer stencil(frame.canvas);
+  stencil.CountWrites(stencil_writes);
   Lighting pass_lighting = lighting;
   pass_lighting.lights.clear();
   pass_lighting.shadow_maps.clear();  // ambient light casts no shadows
@@ -170,8 +173,8 @@ void RenderView(const Scene& scene, const Maps& maps, const std::vector<Plane>& 
   const bool shadow_volumes = extensions.shadows == Shadows::kShadowVolumes;
   if (extensions.multipass_lighting || shadow_volumes) {
     RenderInPasses(camera_space_scene, lighting,
-                   shadow_volumes ? &extensions.shadow_volume_counting : nullptr, planes, draw_all,
-                   frame);
+                   shadow_volumes ? &extensions.shadow_volume_counting : nullptr,
+                   extensions.stencil_writes, planes, draw_all, frame);
   } else {
     draw_all(lighting);
   }

@@ -46,6 +46,9 @@ struct Extensions {
   bool multipass_lighting = false;   // one pass per light, added up (shadow volumes need it)
   Shadows shadows = Shadows::kNone;
   ShadowVolumeCounting shadow_volume_counting = ShadowVolumeCounting::kDepthFail;
+  // With kShadowVolumes: the stencil's writes per pixel, counted into this vector if
+  // given (StencilBuffer::CountWrites), for a cost view.
+  std::vector<long>* stencil_writes = nullptr;
   ShadowMapping shadow_mapping;  // with kShadowMaps
 };
 

@@ -5,9 +5,11 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "program/cost_view.h"
 #include "sphere_model.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
@@ -344,6 +346,9 @@ std::vector<cgfs::Figure> NormalMapFigures() {
 
 // "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
 // one light without shadows, with stencil shadows and with shadow maps.
+// The top of the stencil-writes view's scale.
+constexpr long kStencilWritesScale = 20;
+
 std::vector<cgfs::Figure> ShadowFigures() {
   const auto one_light = [](std::size_t k) {
     return [k] {
@@ -354,6 +359,14 @@ std::vector<cgfs::Figure> ShadowFigures() {
   };
   const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
   const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
+  // The stencil's work for the shadow volumes: its writes per pixel, on the cost ramp.
+  const auto stencil_writes = [volumes](const Scene& scene, Canvas& canvas) {
+    std::vector<long> writes(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+    Extensions counted = volumes;
+    counted.stencil_writes = &writes;
+    RenderScene(scene, canvas, {}, counted);
+    cgfs::DrawCost(canvas, writes, kStencilWritesScale);
+  };
   const auto volume_edges = [volumes](const Scene& scene, Canvas& canvas) {
     RenderScene(scene, canvas, {}, volumes);
     DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
@@ -376,6 +389,11 @@ std::vector<cgfs::Figure> ShadowFigures() {
                   SceneShadows, Extensions{}),
       SceneFigure("stencil-shadows", "the same with stencil shadows (depth fail)", SceneShadows,
                   volumes),
+      SceneFigure(
+          "stencil-shadows-stencil-writes",
+          "the stencil's writes per pixel for the shadow volumes, on a scale to 20: 860 389 in "
+          "all, at most 20",
+          SceneShadows, stencil_writes),
       SceneFigure("shadow-map",
                   "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
                   SceneShadows, maps),
@@ -440,6 +458,11 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   std::vector<cgfs::Figure> figures = NormalMapFigures();
   for (auto group : {ShadowFigures(), EnvironmentFigures(settings)}) {
     figures.insert(figures.end(), group.begin(), group.end());
+  }
+  for (cgfs::Figure& figure : figures) {  // C: the stencil's work behind the shadows
+    if (figure.name == "stencil-shadows") {
+      figure.cost_view = "stencil-shadows-stencil-writes";
+    }
   }
   return figures;
 }

@@ -135,3 +135,7 @@ TEST_CASE("cube-map matches its golden image", "[golden]") {
 TEST_CASE("everything matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "everything");
 }
+
+TEST_CASE("stencil-shadows-stencil-writes matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "stencil-shadows-stencil-writes");
+}
