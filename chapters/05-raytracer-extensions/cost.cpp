@@ -31,3 +31,21 @@ TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
   });
   return counts;
 }
+
+std::vector<long> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
+                             const Optimizations& optimizations) {
+  Scene prepared = scene;
+  PrepareScene(prepared, optimizations);
+  long traced = 0;
+  prepared.traced_rays = &traced;
+  std::vector<long> rays(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+  for (int x = -canvas.Width() / 2; x < canvas.Width() / 2; ++x) {
+    for (int y = -canvas.Height() / 2; y < canvas.Height() / 2; ++y) {
+      traced = 0;
+      const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
+      TraceRay(prepared.camera.position, D, 1, cgfs::kInf, recursion_depth, prepared);
+      rays[PixelIndex(x, y, canvas)] = traced;
+    }
+  }
+  return rays;
+}

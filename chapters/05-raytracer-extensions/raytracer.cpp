@@ -160,6 +160,9 @@ double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s, co
 // and through it.
 Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, int recursion_depth,
                const Scene& scene, double medium_index) {
+  if (scene.traced_rays != nullptr) {
+    ++*scene.traced_rays;
+  }
   const Hit closest = ClosestIntersection(O, D, t_min, t_max, scene);
   if (closest.primitive == nullptr) {
     return scene.background_color;

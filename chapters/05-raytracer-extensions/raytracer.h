@@ -59,6 +59,10 @@ struct Scene {
   Optimizations optimizations;
   std::shared_ptr<const Bvh> bvh;
 
+  // If set, TraceRay adds one for every ray it traces, the camera's and those it
+  // spawns (a cost view counts them per pixel, cost.h).
+  long* traced_rays = nullptr;
+
   template <typename Shape>
   void Add(Shape shape) {
     objects.push_back(std::make_shared<Shape>(std::move(shape)));

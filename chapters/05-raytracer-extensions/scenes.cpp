@@ -279,6 +279,18 @@ std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizatio
   };
 }
 
+// The rays TraceRay traces per pixel, reflections `depth` deep.
+std::function<std::vector<long>(const Scene&, Canvas&)> TracedCounted(int depth,
+                                                                      Optimizations optimizations) {
+  return [depth, optimizations](const Scene& scene, Canvas& canvas) {
+    return TracedRays(scene, depth, canvas, optimizations);
+  };
+}
+
+// The top of the scale of rays traced per pixel, shared by the three views: the most
+// any pixel of them takes (the lens's rim).
+constexpr long kRaysScale = 25;
+
 // The cost views of the chapter's optimisations, each named after the figure it
 // explains.
 std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
@@ -311,6 +323,16 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
             return searches;
           },
           1),
+      CostFigure("transparency-rays",
+                 "rays traced per pixel, the camera's and those reflected and sent through: "
+                 "1 241 735 in all, at most 11",
+                 SceneTransparency, TracedCounted(3, optimizations), kRaysScale),
+      CostFigure("refraction-glass-sphere-rays",
+                 "rays traced per pixel through the glass ball: 1 331 478 in all, at most 23",
+                 SceneGlassSphere, TracedCounted(5, optimizations), kRaysScale),
+      CostFigure("refraction-magnifying-glass-rays",
+                 "rays traced per pixel through the lens: 955 466 in all, at most 25",
+                 SceneMagnifyingGlass, TracedCounted(5, optimizations), kRaysScale),
       CostFigure(
           "supersampling-adaptive-rays",
           "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white): "
@@ -404,5 +426,9 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   SetCostView(figures, "sphere-field-10000", "sphere-field-10000-tests");
   SetCostView(figures, "subsampling-thin-wires", "subsampling-thin-wires-searches");
   SetCostView(figures, "supersampling-adaptive", "supersampling-adaptive-rays");
+  for (const char* name :
+       {"transparency", "refraction-glass-sphere", "refraction-magnifying-glass"}) {
+    SetCostView(figures, name, std::string(name) + "-rays");
+  }
   return figures;
 }

@@ -18,6 +18,12 @@ struct TestsPerPixel {
 TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
                               const Optimizations& optimizations);
 
+// "Reflections", "Transparency" and "Refraction", counted: the rays TraceRay traces for
+// each pixel, its camera ray and every reflected and refracted ray it spawns, with
+// reflections `recursion_depth` deep (Scene::traced_rays). One thread.
+std::vector<long> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
+                             const Optimizations& optimizations);
+
 // The index of canvas pixel (x, y) in memory order: what counts per pixel are stored by.
 inline std::size_t PixelIndex(int x, int y, const Canvas& canvas) {
   const cgfs::ScreenPoint screen = *canvas.ToScreen(x, y);

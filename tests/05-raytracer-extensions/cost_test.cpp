@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "cost_checks.h"
 #include "golden.h"
 #include "printing.h"
+#include "refraction.h"
 #include "sampling.h"
 #include "scenes.h"
 
@@ -129,10 +131,76 @@ TEST_CASE("adaptive supersampling traces 1 ray, or 1 + 16 where it subdivides", 
   CheckDrawn(Figures({}), "supersampling-adaptive-rays", rays, 17);
 }
 
+namespace {
+
+// The rays a camera ray becomes, counted apart from TraceRay along the book's rules
+// ("Reflections", "Transparency", "Refraction"): one for the ray itself, then, where it
+// hits a surface and bounces are left, one reflected ray if the surface reflects and
+// one sent through (bent, or mirrored back inside past the critical angle) if it is
+// transparent.
+long RaysOf(const Vec3& O, const Vec3& D, double t_min, int depth, const Scene& scene,
+            double medium) {
+  const Hit hit = ClosestIntersection(O, D, t_min, cgfs::kInf, scene);
+  if (hit.primitive == nullptr) {
+    return 1;
+  }
+  const Surface& surface = hit.primitive->surface;
+  if (depth <= 0 || (surface.reflective <= 0 && surface.transparency <= 0)) {
+    return 1;
+  }
+  const Vec3 P = O + hit.t * D;
+  const Vec3 N = hit.flip_normal ? -hit.primitive->Normal(P) : hit.primitive->Normal(P);
+  long rays = 1;
+  if (surface.reflective > 0) {
+    rays += RaysOf(P, ReflectRay(-D, N), scene.epsilon, depth - 1, scene, medium);
+  }
+  if (surface.transparency > 0) {
+    const bool entering = glm::dot(D, N) < 0;
+    const Vec3 N_facing = entering ? N : -N;
+    const double next = entering ? surface.refractive_index : kAirIndex;
+    const auto T = next == medium ? std::optional(D) : RefractRay(D, N_facing, medium, next);
+    rays += T ? RaysOf(P, *T, scene.epsilon, depth - 1, scene, *T == D ? medium : next)
+              : RaysOf(P, ReflectRay(-D, N_facing), scene.epsilon, depth - 1, scene, medium);
+  }
+  return rays;
+}
+
+}  // namespace
+
+TEST_CASE("the rays traced per pixel are the rays the book's rules spawn", "[cost]") {
+  const struct {
+    const char* figure;
+    Scene (*scene)();
+    int depth;
+  } views[] = {{"transparency-rays", SceneTransparency, 3},
+               {"refraction-glass-sphere-rays", SceneGlassSphere, 5},
+               {"refraction-magnifying-glass-rays", SceneMagnifyingGlass, 5}};
+  const Canvas canvas(600, 600);
+  for (const auto& view : views) {
+    INFO(view.figure);
+    const std::vector<long> rays = TracedRays(view.scene(), view.depth, canvas, Optimizations{});
+    Scene scene = view.scene();
+    PrepareScene(scene, Optimizations{});
+    long wrong = 0;
+    for (int x = -300; x < 300; x += 3) {
+      for (int y = -300; y < 300; y += 3) {
+        const Vec3 D = CameraRayDirection(x, y, canvas, scene);
+        wrong += rays[PixelIndex(x, y, canvas)] !=
+                 RaysOf(scene.camera.position, D, 1, view.depth, scene, kAirIndex);
+      }
+    }
+    CHECK(wrong == 0);
+    CHECK(Max(rays) <= (2L << view.depth) - 1);  // two rays a bounce at most
+    CheckCaption(Figures({}), view.figure, Total(rays), Max(rays));
+    CheckDrawn(Figures({}), view.figure, rays, 25);
+  }
+}
+
 TEST_CASE("the C key's pairs: each cost view belongs to a figure of the chapter", "[cost]") {
   const std::vector<cgfs::Figure> figures = Figures({});
   CHECK(FindFigure(figures, "sphere-field-10000").cost_view == "sphere-field-10000-tests");
   CHECK(FindFigure(figures, "subsampling-thin-wires").cost_view ==
         "subsampling-thin-wires-searches");
   CHECK(FindFigure(figures, "supersampling-adaptive").cost_view == "supersampling-adaptive-rays");
+  CHECK(FindFigure(figures, "transparency").cost_view == "transparency-rays");
 }

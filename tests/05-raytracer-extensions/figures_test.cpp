@@ -108,6 +108,18 @@ TEST_CASE("supersampling-adaptive-rays matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "supersampling-adaptive-rays");
 }
 
+TEST_CASE("transparency-rays matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "transparency-rays");
+}
+
+TEST_CASE("refraction-glass-sphere-rays matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "refraction-glass-sphere-rays");
+}
+
+TEST_CASE("refraction-magnifying-glass-rays matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "refraction-magnifying-glass-rays");
+}
+
 TEST_CASE("pinned pixels: the Death Star's crater has the small sphere's colour", "[figures]") {
   const Canvas canvas = RenderFigureNamed(Figures({}), "csg-death-star");
   const Rgb8 crater = canvas.GetPixel(-100, 90);
