@@ -161,6 +161,7 @@ void RenderView(const Scene& scene, const Maps& maps, const std::vector<Plane>& 
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
   Frame frame(canvas, depth_buffer, scene.viewport);
   frame.camera_to_world = glm::inverse(M_camera);
+  frame.shadow_entries = extensions.shadow_entries;
   Lighting lighting{TransformLights(scene.lights, M_camera), shading, {}};
   for (const ShadowMap& shadow_map : maps.shadow_maps) {
     lighting.shadow_maps.push_back(&shadow_map);

@@ -49,6 +49,9 @@ struct Extensions {
   // With kShadowVolumes: the stencil's writes per pixel, counted into this vector if
   // given (StencilBuffer::CountWrites), for a cost view.
   std::vector<long>* stencil_writes = nullptr;
+  // With kShadowMaps: the entry of the (first) shadow map each pixel's lookup reads,
+  // written into this vector if given (-1: none), for a cost view.
+  std::vector<long>* shadow_entries = nullptr;
   ShadowMapping shadow_mapping;  // with kShadowMaps
 };
 

@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -346,8 +347,9 @@ std::vector<cgfs::Figure> NormalMapFigures() {
 
 // "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
 // one light without shadows, with stencil shadows and with shadow maps.
-// The top of the stencil-writes view's scale.
+// The top of the stencil-writes view's scale, and of the shadow map's pixels per entry.
 constexpr long kStencilWritesScale = 20;
+constexpr long kPixelsPerEntryScale = 404;
 
 std::vector<cgfs::Figure> ShadowFigures() {
   const auto one_light = [](std::size_t k) {
@@ -366,6 +368,23 @@ std::vector<cgfs::Figure> ShadowFigures() {
     counted.stencil_writes = &writes;
     RenderScene(scene, canvas, {}, counted);
     cgfs::DrawCost(canvas, writes, kStencilWritesScale);
+  };
+  // The shadow map's resolution, pixel by pixel: how many pixels of the canvas read
+  // the same map entry as each one (grey: no lookup, the sky).
+  const auto pixels_per_entry = [maps](const Scene& scene, Canvas& canvas) {
+    std::vector<long> entries(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), -1);
+    Extensions counted = maps;
+    counted.shadow_entries = &entries;
+    RenderScene(scene, canvas, {}, counted);
+    std::unordered_map<long, long> readers;
+    for (const long entry : entries) {
+      readers[entry] += entry >= 0 ? 1 : 0;
+    }
+    std::vector<long> shared(entries.size(), -1);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
+    }
+    cgfs::DrawCost(canvas, shared, kPixelsPerEntryScale);
   };
   const auto volume_edges = [volumes](const Scene& scene, Canvas& canvas) {
     RenderScene(scene, canvas, {}, volumes);
@@ -397,6 +416,10 @@ std::vector<cgfs::Figure> ShadowFigures() {
       SceneFigure("shadow-map",
                   "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
                   SceneShadows, maps),
+      SceneFigure("shadow-map-pixels-per-entry",
+                  "pixels reading the same shadow-map entry as each pixel, on a scale to 404: "
+                  "15 908 710 in all, at most 404",
+                  SceneShadows, pixels_per_entry),
       SceneFigure("shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
                   SceneShadows, With([](Extensions& e) {
                     e.shadows = Shadows::kShadowMaps;
@@ -462,6 +485,9 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   for (cgfs::Figure& figure : figures) {  // C: the stencil's work behind the shadows
     if (figure.name == "stencil-shadows") {
       figure.cost_view = "stencil-shadows-stencil-writes";
+    }
+    if (figure.name == "shadow-map") {
+      figure.cost_view = "shadow-map-pixels-per-entry";
     }
   }
   return figures;

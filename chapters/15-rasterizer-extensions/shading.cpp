@@ -122,6 +122,22 @@ void LightVisibilities(const Vec3& P, const Vec3& N, const Lighting& lighting,
   }
 }
 
+void RecordShadowEntry(const Vec3& P, const Lighting& lighting, int x, int y, Frame& frame) {
+  const std::optional<cgfs::ScreenPoint> screen = frame.canvas.ToScreen(x, y);
+  if (frame.shadow_entries == nullptr || !screen) {
+    return;
+  }
+  for (const ShadowMap* shadow_map : lighting.shadow_maps) {
+    if (shadow_map != nullptr && !shadow_map->views.empty()) {
+      const Vec3 P_world = cgfs::ToCartesian(frame.camera_to_world * glm::dvec4(P, 1.0));
+      const std::optional<long> entry = ShadowMapEntry(*shadow_map, P_world);
+      (*frame.shadow_entries)[static_cast<std::size_t>(screen->row) * frame.canvas.Width() +
+                              static_cast<std::size_t>(screen->column)] = entry ? *entry : -1;
+      return;
+    }
+  }
+}
+
 Color MixReflection(const Color& local, const Vec3& P, const Vec3& N, const Surface& surface,
                     const Frame& frame) {
   if (!surface.environment || surface.reflective == 0) {
@@ -235,6 +251,7 @@ void ShadePhong(const std::array<ShadedCorner, 3>& corners, const Surface& surfa
                  const glm::dvec2 uv = TextureCoordinates(a, texturing);
                  const Vec3 N = BendNormal(glm::normalize(a.normal), surface, uv, tangents);
                  LightVisibilities(P, N, lighting, frame.camera_to_world, visibility);
+                 RecordShadowEntry(P, lighting, x, y, frame);
                  const double illumination =
                      ComputeLighting(P, N, -P, surface.specular, lighting.lights,
                                      lighting.shading.terms, visibility);

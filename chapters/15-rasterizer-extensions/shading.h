@@ -81,6 +81,9 @@ struct Frame {
   Viewport viewport;
   glm::dmat4 camera_to_world{1.0};
   Pass pass;
+  // If set, the entry of the first light's shadow map that each shaded pixel's lookup
+  // reads, row by row from the top (RecordShadowEntry), for a cost view.
+  std::vector<long>* shadow_entries = nullptr;
 
   // "Depth Buffering": whether the point at 1/z = inv_z is closer than what pixel
   // (x, y) shows (and if so, it is now what the pixel shows); in a later pass,
@@ -158,6 +161,10 @@ Vec3 BendNormal(const Vec3& N, const Surface& surface, const glm::dvec2& uv,
 
 // "Shadow Mapping": how much of each light reaches camera-space point P, whose unit
 // normal is N, into `visibility` (one per light); nothing when no light has a map.
+// For Frame::shadow_entries: the entry of the first shadow map with views that pixel
+// (x, y), showing camera-space point P, reads (ShadowMapEntry); -1 if none.
+void RecordShadowEntry(const Vec3& P, const Lighting& lighting, int x, int y, Frame& frame);
+
 void LightVisibilities(const Vec3& P, const Vec3& N, const Lighting& lighting,
                        const glm::dmat4& camera_to_world, std::vector<double>& visibility);
 

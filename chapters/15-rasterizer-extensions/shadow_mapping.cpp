@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "depth_buffer.h"
 #include "projection.h"
@@ -86,7 +87,24 @@ Vec3 TowardsLight(const Light& light, const Vec3& P) {
   return glm::normalize(light.type == LightType::kPoint ? light.position - P : light.direction);
 }
 
+// The entry nearest the point: (tx, ty) rounded, clamped to the view.
+std::pair<int, int> NearestEntry(const ViewPoint& point) {
+  const int last = point.view->size - 1;
+  return {std::clamp(static_cast<int>(std::floor(point.tx + 0.5)), 0, last),
+          std::clamp(static_cast<int>(std::floor(point.ty + 0.5)), 0, last)};
+}
+
 }  // namespace
+
+std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P) {
+  const std::optional<ViewPoint> point = FindInShadowMap(shadow_map, P);
+  if (!point) {
+    return std::nullopt;
+  }
+  const auto [i, j] = NearestEntry(*point);
+  const long size = point->view->size;
+  return (point->view - shadow_map.views.data()) * size * size + j * size + i;
+}
 
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N) {
   const std::optional<ViewPoint> point = FindInShadowMap(shadow_map, P);
@@ -98,8 +116,7 @@ double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N
   const double bias = ShadowBias(settings, cos_angle) * EntryWidth(*point);
   const DepthMap& view = *point->view;
   if (!settings.percentage_closer_filtering) {
-    const int i = static_cast<int>(std::floor(point->tx + 0.5));
-    const int j = static_cast<int>(std::floor(point->ty + 0.5));
+    const auto [i, j] = NearestEntry(*point);
     return InShadow(StoredDepth(view, i, j), point->depth, bias) ? 0 : 1;
   }
   const int i = static_cast<int>(std::floor(point->tx));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -74,6 +75,11 @@ double PercentageCloserFilter(const std::array<bool, 4>& in_shadow, double fx, d
 // surface whose unit normal there is N, in [0, 1]: 0 or 1, or in between with
 // filtering. Points outside every view are lit.
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N);
+
+// The entry a lookup without filtering reads for world-space point P (the one nearest
+// the point), as one number: view x size x size + row x size + column; empty for a point
+// outside every view. What the cost view of a map's resolution counts with.
+std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P);
 
 // "Shadow Mapping": the scene's depths as `light` (in world space) sees them,
 // settings.size x settings.size per view: six perspective views from a point light, one

@@ -139,3 +139,7 @@ TEST_CASE("everything matches its golden image", "[golden]") {
 TEST_CASE("stencil-shadows-stencil-writes matches its golden image", "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "stencil-shadows-stencil-writes");
 }
+
+TEST_CASE("shadow-map-pixels-per-entry matches its golden image", "[golden]") {
+  CheckAgainstGolden(CGFS_CHAPTER, Figures({}), "shadow-map-pixels-per-entry");
+}

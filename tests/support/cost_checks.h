@@ -47,7 +47,8 @@ inline void CheckCaption(const std::vector<Figure>& figures, const std::string& 
 }
 
 // Figure `name`, at the golden size, shows each pixel's count (row by row from the
-// top) through the ramp with `scale_max` at its top, above the scale strip.
+// top) through the ramp with `scale_max` at its top, above the scale strip (a negative
+// count: nothing there, kCostNothing).
 inline void CheckDrawn(const std::vector<Figure>& figures, const std::string& name,
                        const std::vector<long>& counts, long scale_max) {
   const Canvas canvas = RenderFigureNamed(figures, name);
@@ -57,8 +58,9 @@ inline void CheckDrawn(const std::vector<Figure>& figures, const std::string& na
   for (int row = 0; row < above_strip; ++row) {
     for (int column = 0; column < image.Width(); ++column) {
       const double count = static_cast<double>(counts[row * image.Width() + column]);
-      const bool differs =
-          image.At(column, row) != CostRamp(CostPosition(count, static_cast<double>(scale_max)));
+      const Rgb8 expected =
+          count < 0 ? kCostNothing : CostRamp(CostPosition(count, static_cast<double>(scale_max)));
+      const bool differs = image.At(column, row) != expected;
       if (differs && wrong == 0) {
         UNSCOPED_INFO(name << ": first wrong pixel: column " << column << ", row " << row);
       }

@@ -1,0 +1,102 @@
+// The shadow map's resolution view: the entry each pixel's lookup reads
+// (ShadowMapEntry, recorded per pixel through Extensions::shadow_entries), against a
+// hand-made map and against the points an independent ray caster finds.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "cost_checks.h"
+#include "golden.h"
+#include "ray_caster.h"
+#include "scenes.h"
+
+using cgfs::test::CastCameraOf;
+using cgfs::test::CastSceneOf;
+using cgfs::test::CheckCaption;
+using cgfs::test::CheckDrawn;
+using cgfs::test::FindFigure;
+using cgfs::test::Max;
+using cgfs::test::Total;
+
+TEST_CASE("ShadowMapEntry: the face the direction picks, then the entry nearest the point",
+          "[shadow-mapping]") {
+  // As in "a point light's face and entry": the light at the origin, 4 x 4 entries a
+  // face; (x, 0, 2) is on the +Z face at tx = x + 2, ty = 1.
+  ShadowMap map;
+  map.light = {LightType::kPoint, 1, {0, 0, 0}};
+  for (int f = 0; f < 6; ++f) {
+    DepthMap face;
+    face.size = 4;
+    face.depths.assign(16, 0);
+    face.world_to_view = MakeCameraMatrix({0, 0, 0}, CubeFaceOrientation(static_cast<CubeFace>(f)));
+    map.views.push_back(face);
+  }
+  const long z_face = static_cast<long>(CubeFace::kPositiveZ) * 16;
+  CHECK(ShadowMapEntry(map, {-0.4, 0, 2}) == z_face + 1 * 4 + 2);  // tx = 1.6: (2, 1)
+  CHECK(ShadowMapEntry(map, {-0.6, 0, 2}) == z_face + 1 * 4 + 1);  // tx = 1.4: (1, 1)
+  CHECK(ShadowMapEntry(map, {1.9, 0, 2}) == z_face + 1 * 4 + 3);   // tx = 3.9: clamped to 3
+  CHECK(ShadowMapEntry(ShadowMap{}, {0, 0, 2}) == std::nullopt);   // no views: no entry
+}
+
+TEST_CASE("each pixel reads the entry of the point a ray through it finds, away from edges",
+          "[cost][ray-cast]") {
+  const Scene scene = SceneShadows();
+  Canvas canvas(600, 600);
+  std::vector<long> entries(600 * 600, -1);
+  Extensions extensions;
+  extensions.shadows = Shadows::kShadowMaps;
+  extensions.shadow_entries = &entries;
+  RenderScene(scene, canvas, {}, extensions);
+  const ShadowMap map = RenderShadowMap(scene, scene.lights.back(), extensions.shadow_mapping);
+
+  // The entry of the point the ray through canvas point (x, y) hits (-1: nothing), and
+  // the triangle it is on.
+  const cgfs::test::CastScene cast = CastSceneOf(scene);
+  const cgfs::test::CastCamera camera = CastCameraOf(scene);
+  const auto entry_at = [&](double x, double y) -> std::pair<long, long> {
+    const glm::dvec3 D = camera.orientation * glm::dvec3(x / 600, y / 600, camera.distance);
+    const auto hit = cgfs::test::Cast(cast, camera.position, D, 1, 1e9, true);
+    if (!hit) {
+      return {-1, -1};
+    }
+    return {ShadowMapEntry(map, hit->point).value_or(-1), hit->instance * 100000 + hit->triangle};
+  };
+  long compared = 0, agreeing = 0;
+  for (int y = -297; y < 300; y += 3) {
+    for (int x = -297; x < 300; x += 3) {
+      const auto here = entry_at(x, y);
+      bool steady = here.first >= 0;
+      for (const auto& [dx, dy] : {std::pair{-1.5, -1.5}, {1.5, -1.5}, {-1.5, 1.5}, {1.5, 1.5}}) {
+        steady = steady && entry_at(x + dx, y + dy) == here;
+      }
+      if (steady) {
+        ++compared;
+        agreeing += entries[(299 - y) * 600 + (x + 300)] == here.first;
+      }
+    }
+  }
+  INFO(agreeing << " of " << compared << " pixels inside one entry's footprint agree");
+  CHECK(compared > 1000);
+  CHECK(agreeing == compared);
+
+  // The view: each pixel, the number of pixels that read its entry.
+  std::unordered_map<long, long> readers;
+  for (const long entry : entries) {
+    readers[entry] += entry >= 0 ? 1 : 0;
+  }
+  std::vector<long> shared(entries.size(), -1);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
+  }
+  const std::vector<cgfs::Figure> figures = Figures({});
+  std::vector<long> counted;  // the pixels that read an entry
+  for (const long n : shared) {
+    counted.push_back(std::max(n, 0L));
+  }
+  CheckCaption(figures, "shadow-map-pixels-per-entry", Total(counted), Max(counted));
+  CheckDrawn(figures, "shadow-map-pixels-per-entry", shared, 404);
+  CHECK(FindFigure(figures, "shadow-map").cost_view == "shadow-map-pixels-per-entry");
+}
