@@ -251,7 +251,9 @@ void ShadePhong(const std::array<ShadedCorner, 3>& corners, const Surface& surfa
                  const glm::dvec2 uv = TextureCoordinates(a, texturing);
                  const Vec3 N = BendNormal(glm::normalize(a.normal), surface, uv, tangents);
                  LightVisibilities(P, N, lighting, frame.camera_to_world, visibility);
-                 RecordShadowEntry(P, lighting, x, y, frame);
+                 if (frame.shadow_entries != nullptr) {
+                   RecordShadowEntry(P, lighting, x, y, frame);
+                 }
                  const double illumination =
                      ComputeLighting(P, N, -P, surface.specular, lighting.lights,
                                      lighting.shading.terms, visibility);

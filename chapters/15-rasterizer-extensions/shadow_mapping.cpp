@@ -87,11 +87,10 @@ Vec3 TowardsLight(const Light& light, const Vec3& P) {
   return glm::normalize(light.type == LightType::kPoint ? light.position - P : light.direction);
 }
 
-// The entry nearest the point: (tx, ty) rounded, clamped to the view.
+// The entry nearest the point: (tx, ty) rounded (StoredDepth clamps it to the view).
 std::pair<int, int> NearestEntry(const ViewPoint& point) {
-  const int last = point.view->size - 1;
-  return {std::clamp(static_cast<int>(std::floor(point.tx + 0.5)), 0, last),
-          std::clamp(static_cast<int>(std::floor(point.ty + 0.5)), 0, last)};
+  return {static_cast<int>(std::floor(point.tx + 0.5)),
+          static_cast<int>(std::floor(point.ty + 0.5))};
 }
 
 }  // namespace
@@ -102,8 +101,9 @@ std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P) {
     return std::nullopt;
   }
   const auto [i, j] = NearestEntry(*point);
-  const long size = point->view->size;
-  return (point->view - shadow_map.views.data()) * size * size + j * size + i;
+  const int size = point->view->size;
+  const long view = point->view - shadow_map.views.data();
+  return (view * size + std::clamp(j, 0, size - 1)) * size + std::clamp(i, 0, size - 1);
 }
 
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N) {
