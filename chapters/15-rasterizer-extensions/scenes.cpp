@@ -345,12 +345,43 @@ std::vector<cgfs::Figure> NormalMapFigures() {
   };
 }
 
-// "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
-// one light without shadows, with stencil shadows and with shadow maps.
-// The top of the stencil-writes view's scale, and of the shadow map's pixels per entry.
+// The tops of the scales of the shadows' cost views: the most any pixel of them takes.
 constexpr long kStencilWritesScale = 20;
 constexpr long kPixelsPerEntryScale = 404;
 
+// The cost views of the shadows: the stencil's writes per pixel for the shadow volumes,
+// and, per pixel, how many pixels read the same shadow-map entry (grey: no lookup, the
+// sky).
+std::vector<cgfs::Figure> ShadowCostFigures() {
+  const auto stencil_writes = [](const Scene& scene, Canvas& canvas) {
+    std::vector<long> writes(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+    Extensions counted = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
+    counted.stencil_writes = &writes;
+    RenderScene(scene, canvas, {}, counted);
+    cgfs::DrawCost(canvas, writes, kStencilWritesScale);
+  };
+  const auto pixels_per_entry = [](const Scene& scene, Canvas& canvas) {
+    std::vector<long> entries(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), -1);
+    Extensions counted = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
+    counted.shadow_entries = &entries;
+    RenderScene(scene, canvas, {}, counted);
+    cgfs::DrawCost(canvas, PixelsSharingEntry(entries), kPixelsPerEntryScale);
+  };
+  return {
+      SceneFigure(
+          "stencil-shadows-stencil-writes",
+          "the stencil's writes per pixel for the shadow volumes, on a scale to 20: 860 389 "
+          "in all, at most 20",
+          SceneShadows, stencil_writes),
+      SceneFigure("shadow-map-pixels-per-entry",
+                  "pixels reading the same shadow-map entry as each pixel, on a scale to 404: "
+                  "15 908 710 in all, at most 404",
+                  SceneShadows, pixels_per_entry),
+  };
+}
+
+// "Shadows": the passes of Figure 15-3, the volume of Figure 15-4, and one scene lit by
+// one light without shadows, with stencil shadows and with shadow maps.
 std::vector<cgfs::Figure> ShadowFigures() {
   const auto one_light = [](std::size_t k) {
     return [k] {
@@ -361,31 +392,6 @@ std::vector<cgfs::Figure> ShadowFigures() {
   };
   const Extensions volumes = With([](Extensions& e) { e.shadows = Shadows::kShadowVolumes; });
   const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
-  // The stencil's work for the shadow volumes: its writes per pixel, on the cost ramp.
-  const auto stencil_writes = [volumes](const Scene& scene, Canvas& canvas) {
-    std::vector<long> writes(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
-    Extensions counted = volumes;
-    counted.stencil_writes = &writes;
-    RenderScene(scene, canvas, {}, counted);
-    cgfs::DrawCost(canvas, writes, kStencilWritesScale);
-  };
-  // The shadow map's resolution, pixel by pixel: how many pixels of the canvas read
-  // the same map entry as each one (grey: no lookup, the sky).
-  const auto pixels_per_entry = [maps](const Scene& scene, Canvas& canvas) {
-    std::vector<long> entries(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), -1);
-    Extensions counted = maps;
-    counted.shadow_entries = &entries;
-    RenderScene(scene, canvas, {}, counted);
-    std::unordered_map<long, long> readers;
-    for (const long entry : entries) {
-      readers[entry] += entry >= 0 ? 1 : 0;
-    }
-    std::vector<long> shared(entries.size(), -1);
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
-    }
-    cgfs::DrawCost(canvas, shared, kPixelsPerEntryScale);
-  };
   const auto volume_edges = [volumes](const Scene& scene, Canvas& canvas) {
     RenderScene(scene, canvas, {}, volumes);
     DrawShadowVolumeEdges(scene, scene.instances.front(), scene.lights.back(), -1, canvas);
@@ -408,18 +414,9 @@ std::vector<cgfs::Figure> ShadowFigures() {
                   SceneShadows, Extensions{}),
       SceneFigure("stencil-shadows", "the same with stencil shadows (depth fail)", SceneShadows,
                   volumes),
-      SceneFigure(
-          "stencil-shadows-stencil-writes",
-          "the stencil's writes per pixel for the shadow volumes, on a scale to 20: 860 389 in "
-          "all, at most 20",
-          SceneShadows, stencil_writes),
       SceneFigure("shadow-map",
                   "the same with shadow maps, 256 x 256 per view, no filtering: jagged edges",
                   SceneShadows, maps),
-      SceneFigure("shadow-map-pixels-per-entry",
-                  "pixels reading the same shadow-map entry as each pixel, on a scale to 404: "
-                  "15 908 710 in all, at most 404",
-                  SceneShadows, pixels_per_entry),
       SceneFigure("shadow-map-pcf", "the same with percentage-closer filtering: softer edges",
                   SceneShadows, With([](Extensions& e) {
                     e.shadows = Shadows::kShadowMaps;
@@ -479,7 +476,7 @@ std::vector<cgfs::Figure> EnvironmentFigures(const ChapterSettings& settings) {
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   std::vector<cgfs::Figure> figures = NormalMapFigures();
-  for (auto group : {ShadowFigures(), EnvironmentFigures(settings)}) {
+  for (auto group : {ShadowFigures(), ShadowCostFigures(), EnvironmentFigures(settings)}) {
     figures.insert(figures.end(), group.begin(), group.end());
   }
   for (cgfs::Figure& figure : figures) {  // C: the stencil's work behind the shadows
@@ -491,4 +488,16 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
     }
   }
   return figures;
+}
+
+std::vector<long> PixelsSharingEntry(const std::vector<long>& entries) {
+  std::unordered_map<long, long> readers;
+  for (const long entry : entries) {
+    readers[entry] += entry >= 0 ? 1 : 0;
+  }
+  std::vector<long> shared(entries.size(), -1);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
+  }
+  return shared;
 }

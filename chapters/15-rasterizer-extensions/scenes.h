@@ -70,5 +70,9 @@ Scene SceneCubeOverFloor();
 // shadowed.
 Scene SceneEverything(const Model& crate);
 
+// For the shadow map's cost view: given the entry each pixel reads (-1: none), how many
+// pixels read each pixel's entry (-1 where it reads none).
+std::vector<long> PixelsSharingEntry(const std::vector<long>& entries);
+
 // Every figure this chapter draws, made with `settings`.
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);

@@ -279,6 +279,18 @@ std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizatio
   };
 }
 
+// What a main loop counts per pixel while it draws (`render` fills the counts it is
+// given); the picture it draws is not kept.
+std::function<std::vector<long>(const Scene&, Canvas&)> CountedWhileDrawing(
+    std::function<void(const Scene&, Canvas&, std::vector<long>*)> render) {
+  return [render](const Scene& scene, Canvas& canvas) {
+    std::vector<long> counts(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+    Canvas drawn(canvas.Width(), canvas.Height());
+    render(scene, drawn, &counts);
+    return counts;
+  };
+}
+
 // The rays TraceRay traces per pixel, reflections `depth` deep.
 std::function<std::vector<long>(const Scene&, Canvas&)> TracedCounted(int depth,
                                                                       Optimizations optimizations) {
@@ -298,9 +310,6 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
   loop.bvh = false;
   hierarchy.bvh = true;
   const auto field = [] { return SceneSphereField(10000); };
-  const auto sized = [](Canvas& canvas) {
-    return std::vector<long>(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
-  };
   return {
       CostFigure("sphere-field-10000-tests",
                  "box and object tests per camera ray through the hierarchy, on a log scale to "
@@ -311,18 +320,15 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
           "tests per camera ray without the hierarchy, one per object: 3 600 360 000 in all, "
           "at most 10 001",
           field, TestsCounted(loop), 10001),
-      CostFigure(
-          "subsampling-thin-wires-searches",
-          "the pixels whose camera ray subsampling searched through the scene (white): "
-          "101 303 in all, at most 1",
-          SceneThinWires,
-          [optimizations, sized](const Scene& scene, Canvas& canvas) {
-            std::vector<long> searches = sized(canvas);
-            Canvas image(canvas.Width(), canvas.Height());
-            RenderSceneSubsampled(scene, 0, image, optimizations, &searches);
-            return searches;
-          },
-          1),
+      CostFigure("subsampling-thin-wires-searches",
+                 "the pixels whose camera ray subsampling searched through the scene (white): "
+                 "101 303 in all, at most 1",
+                 SceneThinWires,
+                 CountedWhileDrawing([optimizations](const Scene& scene, Canvas& drawn,
+                                                     std::vector<long>* searches) {
+                   RenderSceneSubsampled(scene, 0, drawn, optimizations, searches);
+                 }),
+                 1),
       CostFigure("transparency-rays",
                  "rays traced per pixel, the camera's and those reflected and sent through: "
                  "1 241 735 in all, at most 11",
@@ -333,18 +339,15 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
       CostFigure("refraction-magnifying-glass-rays",
                  "rays traced per pixel through the lens: 955 466 in all, at most 25",
                  SceneMagnifyingGlass, TracedCounted(5, optimizations), kRaysScale),
-      CostFigure(
-          "supersampling-adaptive-rays",
-          "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white): "
-          "443 744 in all, at most 17",
-          SceneCamera,
-          [optimizations, sized](const Scene& scene, Canvas& canvas) {
-            std::vector<long> rays = sized(canvas);
-            Canvas image(canvas.Width(), canvas.Height());
-            RenderSceneAdaptive(scene, 3, image, optimizations, &rays);
-            return rays;
-          },
-          17),
+      CostFigure("supersampling-adaptive-rays",
+                 "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white): "
+                 "443 744 in all, at most 17",
+                 SceneCamera,
+                 CountedWhileDrawing(
+                     [optimizations](const Scene& scene, Canvas& drawn, std::vector<long>* rays) {
+                       RenderSceneAdaptive(scene, 3, drawn, optimizations, rays);
+                     }),
+                 17),
   };
 }
 

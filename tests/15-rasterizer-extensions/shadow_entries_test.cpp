@@ -1,10 +1,10 @@
 // The shadow map's resolution view: the entry each pixel's lookup reads
-// (ShadowMapEntry, recorded per pixel through Extensions::shadow_entries), against a
-// hand-made map and against the points an independent ray caster finds.
+// (ShadowMapEntry, recorded per pixel through Extensions::shadow_entries), against the
+// points an independent ray caster finds (ShadowMapEntry on a hand-made map:
+// shadow_mapping_test.cpp).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -20,26 +20,6 @@ using cgfs::test::CheckDrawn;
 using cgfs::test::FindFigure;
 using cgfs::test::Max;
 using cgfs::test::Total;
-
-TEST_CASE("ShadowMapEntry: the face the direction picks, then the entry nearest the point",
-          "[shadow-mapping]") {
-  // As in "a point light's face and entry": the light at the origin, 4 x 4 entries a
-  // face; (x, 0, 2) is on the +Z face at tx = x + 2, ty = 1.
-  ShadowMap map;
-  map.light = {LightType::kPoint, 1, {0, 0, 0}};
-  for (int f = 0; f < 6; ++f) {
-    DepthMap face;
-    face.size = 4;
-    face.depths.assign(16, 0);
-    face.world_to_view = MakeCameraMatrix({0, 0, 0}, CubeFaceOrientation(static_cast<CubeFace>(f)));
-    map.views.push_back(face);
-  }
-  const long z_face = static_cast<long>(CubeFace::kPositiveZ) * 16;
-  CHECK(ShadowMapEntry(map, {-0.4, 0, 2}) == z_face + 1 * 4 + 2);  // tx = 1.6: (2, 1)
-  CHECK(ShadowMapEntry(map, {-0.6, 0, 2}) == z_face + 1 * 4 + 1);  // tx = 1.4: (1, 1)
-  CHECK(ShadowMapEntry(map, {1.9, 0, 2}) == z_face + 1 * 4 + 3);   // tx = 3.9: clamped to 3
-  CHECK(ShadowMapEntry(ShadowMap{}, {0, 0, 2}) == std::nullopt);   // no views: no entry
-}
 
 TEST_CASE("each pixel reads the entry of the point a ray through it finds, away from edges",
           "[cost][ray-cast]") {
@@ -83,14 +63,7 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
   CHECK(agreeing == compared);
 
   // The view: each pixel, the number of pixels that read its entry.
-  std::unordered_map<long, long> readers;
-  for (const long entry : entries) {
-    readers[entry] += entry >= 0 ? 1 : 0;
-  }
-  std::vector<long> shared(entries.size(), -1);
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
-  }
+  const std::vector<long> shared = PixelsSharingEntry(entries);
   const std::vector<cgfs::Figure> figures = Figures({});
   std::vector<long> counted;  // the pixels that read an entry
   for (const long n : shared) {
@@ -99,4 +72,9 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
   CheckCaption(figures, "shadow-map-pixels-per-entry", Total(counted), Max(counted));
   CheckDrawn(figures, "shadow-map-pixels-per-entry", shared, 404);
   CHECK(FindFigure(figures, "shadow-map").cost_view == "shadow-map-pixels-per-entry");
+}
+
+TEST_CASE("PixelsSharingEntry: each pixel, how many pixels read its entry", "[cost]") {
+  CHECK(PixelsSharingEntry({5, 5, -1, 7, 5}) == std::vector<long>{3, 3, -1, 1, 3});
+  CHECK(PixelsSharingEntry({}).empty());
 }

@@ -163,4 +163,10 @@ TEST_CASE("a point light's face and entry: the direction picks the face, then th
   CHECK(LightVisibility(map, {-0.4, 0, 2}, N) == 0);           // tx = 1.6: entry (2, 1)
   CHECK(LightVisibility(map, {-0.6, 0, 2}, N) == 1);           // tx = 1.4: entry (1, 1)
   CHECK(LightVisibility(map, {-0.4, 0, -2}, {0, 0, 1}) == 1);  // behind: the -Z face, empty
+  // ShadowMapEntry names the same entries (view x 16 + row x 4 + column), clamped.
+  const long z_face = static_cast<long>(CubeFace::kPositiveZ) * 16;
+  CHECK(ShadowMapEntry(map, {-0.4, 0, 2}) == z_face + 1 * 4 + 2);  // tx = 1.6: (2, 1)
+  CHECK(ShadowMapEntry(map, {-0.6, 0, 2}) == z_face + 1 * 4 + 1);  // tx = 1.4: (1, 1)
+  CHECK(ShadowMapEntry(map, {1.9, 0, 2}) == z_face + 1 * 4 + 3);   // tx = 3.9: clamped to 3
+  CHECK(ShadowMapEntry(ShadowMap{}, {0, 0, 2}) == std::nullopt);   // no views: no entry
 }
