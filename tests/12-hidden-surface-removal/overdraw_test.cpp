@@ -3,7 +3,7 @@
 // figures themselves.
 #include <catch2/catch.hpp>
 
-#include <cmath>
+#include <optional>
 #include <vector>
 
 #include "cost_checks.h"
@@ -17,6 +17,7 @@ using cgfs::test::CheckCaption;
 using cgfs::test::CheckDrawn;
 using cgfs::test::FindFigure;
 using cgfs::test::Max;
+using cgfs::test::MeetsTriangle;
 using cgfs::test::RenderFigureNamed;
 using cgfs::test::Total;
 
@@ -35,7 +36,7 @@ std::vector<long> Writes(const HiddenSurfaceRemoval& method) {
 
 // How many of the scene's triangles, front or back, the ray through each pixel crosses
 // beyond the projection plane (t > 1): what the painter, which draws every triangle,
-// should write there. Moeller and Trumbore's test, on the ray caster's triangles. With
+// should write there (MeetsTriangle, on the ray caster's triangles). With
 // `which`, a number for the set of triangles crossed (a sum of a large odd number
 // times each one's index plus one): where it changes, an edge passes.
 struct Crossed {
@@ -54,16 +55,8 @@ Crossed Crossings() {
                                           y * camera.viewport_height / 600, camera.distance);
       long count = 0, which = 0;
       for (std::size_t k = 0; k < cast.triangles.size(); ++k) {
-        const cgfs::test::CastTriangle& T = cast.triangles[k];
-        const glm::dvec3 e1 = T.b - T.a, e2 = T.c - T.a, p = glm::cross(D, e2);
-        const double det = glm::dot(e1, p);
-        if (std::abs(det) < 1e-12) {
-          continue;
-        }
-        const glm::dvec3 s = camera.position - T.a, q = glm::cross(s, e1);
-        const double u = glm::dot(s, p) / det, v = glm::dot(D, q) / det;
-        const double t = glm::dot(e2, q) / det;
-        if (u >= 0 && v >= 0 && u + v <= 1 && t > 1) {
+        const std::optional<double> t = MeetsTriangle(cast.triangles[k], camera.position, D);
+        if (t && *t > 1) {
           ++count;
           which += static_cast<long>(k + 1) * 1000003;
         }

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,7 @@ using cgfs::test::CheckCaption;
 using cgfs::test::CheckDrawn;
 using cgfs::test::FindFigure;
 using cgfs::test::Max;
+using cgfs::test::MeetsTriangle;
 using cgfs::test::Total;
 
 namespace {
@@ -54,7 +56,7 @@ std::vector<Model> WorldVolumes(const Scene& scene, const Light& light) {
 }
 
 // How many of the volumes' triangles the ray through canvas point (x, y) crosses beyond
-// the surface it shows (Moeller and Trumbore), and a number for which ones and for that
+// the surface it shows (MeetsTriangle), and a number for which ones and for that
 // surface: where it changes, an edge passes.
 // `dark_side`: the surface is an occluder's side away from the light, where its
 // volume's near cap lies on it, at the same depth (see BuildShadowVolume).
@@ -81,18 +83,10 @@ Crossing VolumeCrossing(const cgfs::test::CastScene& cast, const cgfs::test::Cas
   for (const Model& volume : volumes) {
     for (const Triangle& T : volume.triangles) {
       ++k;
-      const Vec3 a = volume.vertices[static_cast<std::size_t>(T.v[0])];
-      const Vec3 e1 = volume.vertices[static_cast<std::size_t>(T.v[1])] - a;
-      const Vec3 e2 = volume.vertices[static_cast<std::size_t>(T.v[2])] - a;
-      const Vec3 p = glm::cross(D, e2);
-      const double det = glm::dot(e1, p);
-      if (std::abs(det) < 1e-12) {
-        continue;
-      }
-      const Vec3 s = camera.position - a, q = glm::cross(s, e1);
-      const double u = glm::dot(s, p) / det, v = glm::dot(D, q) / det;
-      const double t = glm::dot(e2, q) / det;
-      if (u >= 0 && v >= 0 && u + v <= 1 && t > 1 && t > t_surface) {
+      const auto corner = [&](int c) { return volume.vertices[static_cast<std::size_t>(T.v[c])]; };
+      const std::optional<double> t =
+          MeetsTriangle({corner(0), corner(1), corner(2)}, camera.position, D);
+      if (t && *t > 1 && *t > t_surface) {
         ++crossing.count;
         crossing.which += k * 1000003;
       }

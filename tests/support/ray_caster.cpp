@@ -23,8 +23,8 @@ bool MeetsBounds(const CastBounds& bounds, const glm::dvec3& O, const glm::dvec3
   return (-b + root) / (2 * a) > t_min && (-b - root) / (2 * a) < t_max;
 }
 
-// Moller and Trumbore's ray-triangle test, in double precision: the t where O + tD
-// meets the triangle's inside, if it does.
+}  // namespace
+
 std::optional<double> MeetsTriangle(const CastTriangle& T, const glm::dvec3& O,
                                     const glm::dvec3& D) {
   const glm::dvec3 e1 = T.b - T.a;
@@ -46,8 +46,6 @@ std::optional<double> MeetsTriangle(const CastTriangle& T, const glm::dvec3& O,
   }
   return glm::dot(e2, q) / det;
 }
-
-}  // namespace
 
 std::optional<CastHit> Cast(const CastScene& scene, const glm::dvec3& O, const glm::dvec3& D,
                             double t_min, double t_max, bool cull_back_faces) {

@@ -53,6 +53,11 @@ struct CastHit {
   glm::dvec3 normal{0, 0, 0};
 };
 
+// Moller and Trumbore's ray-triangle test, in double precision: the t where O + tD
+// meets the triangle's inside (front or back), if it does.
+std::optional<double> MeetsTriangle(const CastTriangle& T, const glm::dvec3& O,
+                                    const glm::dvec3& D);
+
 // The first triangle O + tD meets with t_min < t < t_max, closed models' back faces
 // left out when `cull_back_faces`; nothing if none.
 std::optional<CastHit> Cast(const CastScene& scene, const glm::dvec3& O, const glm::dvec3& D,
