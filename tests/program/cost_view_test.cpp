@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "program/cost_view.h"
+#include "program/figure.h"
 
 using cgfs::Canvas;
 using cgfs::CostRamp;
@@ -77,10 +78,12 @@ TEST_CASE("DrawCost draws each pixel's count and a strip with the scale", "[cost
   cgfs::DrawCost(canvas, counts, 4);
   CHECK(canvas.GetImage().At(1, 0) == cgfs::kCostNothing);
   // A grey the ramp never takes: its hue is strongest halfway, where its brightness is.
+  int near_grey = 0;
   for (int i = 0; i <= 1000; ++i) {
     const Rgb8 c = CostRamp(i / 1000.0);
-    CHECK(std::max({std::abs(c.r - 128), std::abs(c.g - 128), std::abs(c.b - 128)}) > 8);
+    near_grey += std::max({std::abs(c.r - 128), std::abs(c.g - 128), std::abs(c.b - 128)}) <= 8;
   }
+  CHECK(near_grey == 0);
 }
 
 TEST_CASE("above kCostStepsMax the strip runs smoothly from black to white", "[cost]") {
@@ -90,4 +93,14 @@ TEST_CASE("above kCostStepsMax the strip runs smoothly from black to white", "[c
   CHECK(image.At(0, 39) == Rgb8{0, 0, 0});
   CHECK(image.At(39, 39) == Rgb8{255, 255, 255});
   CHECK(image.At(3, 3) == CostRamp(std::log(18.0) / std::log(1001.0)));
+}
+
+TEST_CASE("CostPartner: a figure's cost view, and back, by name wherever it stands", "[cost]") {
+  cgfs::Figure plain{"plain", "", {}}, costly{"costly", "", {}}, view{"costly-view", "", {}};
+  costly.cost_view = "costly-view";
+  const std::vector<const cgfs::Figure*> figures = {&view, &plain, &costly};
+  CHECK(cgfs::CostPartner(figures, 2) == 0);             // costly: its view
+  CHECK(cgfs::CostPartner(figures, 0) == 2);             // the view: back to costly
+  CHECK(cgfs::CostPartner(figures, 1) == -1);            // plain has none
+  CHECK(cgfs::CostPartner({&costly, &plain}, 0) == -1);  // its view not in the list
 }
