@@ -93,6 +93,13 @@ EMSCRIPTEN_KEEPALIVE int FigureCostPartner(int index) {
   return cgfs::CostPartner(all, static_cast<std::size_t>(index));
 }
 
+// Whether figure `index` names a cost view of its own (1), or not (0; -1 out of range):
+// the page's C button says where it goes.
+EMSCRIPTEN_KEEPALIVE int FigureHasCostView(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  return figure == nullptr ? -1 : figure->cost_view.empty() ? 0 : 1;
+}
+
 // Draws figure `index` at width x height, from the camera's view where the figure has a
 // camera; the pixels, width x height x 4 bytes, then stand at Pixels(). 1, or 0 with
 // LastError() saying why.

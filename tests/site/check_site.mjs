@@ -180,13 +180,15 @@ async function CheckCostKey(browser, chapter, figure, costView) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`);
   const button = await browser.Evaluate("document.getElementById('cost').textContent");
-  if (button !== `${costView} (C)`) Fail(`${chapter}: ${figure}'s cost button says '${button}'`);
+  if (button !== `where the work goes: ${costView} (C)`) Fail(`${chapter}: ${figure}'s cost button says '${button}'`);
   await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.body.focus(); })()");
   await browser.Key('c');
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: C`);
   if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${costView}.png`)))) {
     Fail(`${chapter}: C on ${figure} did not show ${costView}`);
   }
+  const back = await browser.Evaluate("document.getElementById('cost').textContent");
+  if (back !== `back to ${figure} (C)`) Fail(`${chapter}: ${costView}'s cost button says '${back}'`);
   await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.getElementById('cost').click(); })()");
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the cost button`);
   if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${figure}.png`)))) {

@@ -86,7 +86,10 @@ function Select(index) {
   Say('status', `drawing ${figures[index].name}…`);
   const partner = figures[index].costPartner;
   document.getElementById('cost').hidden = partner < 0;
-  if (partner >= 0) document.getElementById('cost').textContent = `${figures[partner].name} (C)`;
+  if (partner >= 0) {
+    document.getElementById('cost').textContent = figures[index].hasCostView
+      ? `where the work goes: ${figures[partner].name} (C)` : `back to ${figures[partner].name} (C)`;
+  }
   ShowView();
   requestAnimationFrame(() => setTimeout(() => Draw(true)));
 }
@@ -180,7 +183,8 @@ function Start(module) {
   for (let i = 0; i < chapter._FigureCount(); ++i) {
     const figure = {name: Text(chapter._FigureName(i)), caption: Text(chapter._FigureCaption(i)),
                     hasCamera: chapter._FigureHasCamera(i) === 1,
-                    costPartner: chapter._FigureCostPartner(i)};
+                    costPartner: chapter._FigureCostPartner(i),
+                    hasCostView: chapter._FigureHasCostView(i) === 1};
     figure.button = document.createElement('button');
     figure.button.type = 'button';
     figure.button.textContent = figure.name;
