@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <unistd.h>
@@ -21,14 +22,27 @@ using cgfs::Rgb8;
 
 namespace {
 
+// The folders TemporaryFolder made, removed when the test program ends.
+struct MadeFolders {
+  std::vector<fs::path> paths;
+  ~MadeFolders() {
+    for (const fs::path& path : paths) {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  }
+};
+
 // A fresh, empty folder per test case.
 fs::path TemporaryFolder() {
   static int counter = 0;
+  static MadeFolders made;
   const fs::path folder =
       fs::temp_directory_path() /
       ("cgfs-image-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   fs::remove_all(folder);
   fs::create_directories(folder);
+  made.paths.push_back(folder);
   return folder;
 }
 
