@@ -293,13 +293,9 @@ std::vector<cgfs::Figure> Figures() {
                      "the overdraw with back faces culled: 98 818 in all, at most 2",
                      SceneTransformedCubes, culled, kOverdrawScale),
   };
-  // The C key goes from a figure to the one of its name and "-overdraw".
-  for (cgfs::Figure& figure : figures) {
-    for (const cgfs::Figure& view : figures) {
-      if (view.name == figure.name + "-overdraw") {
-        figure.cost_view = view.name;
-      }
-    }
+  for (const char* name :
+       {"painters-algorithm-cubes", "fig-12-4-depth-buffer", "back-face-culling"}) {
+    cgfs::SetCostView(figures, name, std::string(name) + "-overdraw");
   }
   return figures;
 }

@@ -304,6 +304,6 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
                      "0 to 8: 131 055 in all, at most 5",
                      crates, WithTexturing(kPerspectiveCorrect, kMipmap), 8),
   };
-  figures[9].cost_view = "crates-trilinear-mip-levels";  // C: crates-trilinear's levels
+  cgfs::SetCostView(figures, "crates-trilinear", "crates-trilinear-mip-levels");
   return figures;
 }

@@ -479,14 +479,8 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   for (auto group : {ShadowFigures(), ShadowCostFigures(), EnvironmentFigures(settings)}) {
     figures.insert(figures.end(), group.begin(), group.end());
   }
-  for (cgfs::Figure& figure : figures) {  // C: the stencil's work behind the shadows
-    if (figure.name == "stencil-shadows") {
-      figure.cost_view = "stencil-shadows-stencil-writes";
-    }
-    if (figure.name == "shadow-map") {
-      figure.cost_view = "shadow-map-pixels-per-entry";
-    }
-  }
+  cgfs::SetCostView(figures, "stencil-shadows", "stencil-shadows-stencil-writes");
+  cgfs::SetCostView(figures, "shadow-map", "shadow-map-pixels-per-entry");
   return figures;
 }
 

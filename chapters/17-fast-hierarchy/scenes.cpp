@@ -351,16 +351,6 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
   };
 }
 
-// Gives the figure named `name` its cost view, for the C key.
-void SetCostView(std::vector<cgfs::Figure>& figures, const std::string& name,
-                 const std::string& cost_view) {
-  for (cgfs::Figure& figure : figures) {
-    if (figure.name == name) {
-      figure.cost_view = cost_view;
-    }
-  }
-}
-
 }  // namespace
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
@@ -426,12 +416,12 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
                                 }));
   const std::vector<cgfs::Figure> costs = CostFigures(optimizations);
   figures.insert(figures.end(), costs.begin(), costs.end());
-  SetCostView(figures, "sphere-field-10000", "sphere-field-10000-tests");
-  SetCostView(figures, "subsampling-thin-wires", "subsampling-thin-wires-searches");
-  SetCostView(figures, "supersampling-adaptive", "supersampling-adaptive-rays");
+  cgfs::SetCostView(figures, "sphere-field-10000", "sphere-field-10000-tests");
+  cgfs::SetCostView(figures, "subsampling-thin-wires", "subsampling-thin-wires-searches");
+  cgfs::SetCostView(figures, "supersampling-adaptive", "supersampling-adaptive-rays");
   for (const char* name :
        {"transparency", "refraction-glass-sphere", "refraction-magnifying-glass"}) {
-    SetCostView(figures, name, std::string(name) + "-rays");
+    cgfs::SetCostView(figures, name, std::string(name) + "-rays");
   }
   return figures;
 }

@@ -1,7 +1,9 @@
 #include "program/figure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "program/error.h"
 
@@ -17,6 +19,19 @@ Canvas RenderFigure(const Figure& figure, int width, int height, const View& vie
     throw UsageError("figure '" + figure.name + "' has no camera to move (--view)");
   }
   return canvas;
+}
+
+void SetCostView(std::vector<Figure>& figures, const std::string& name,
+                 const std::string& cost_view) {
+  const auto named = [&](const std::string& wanted) {
+    return std::find_if(figures.begin(), figures.end(),
+                        [&](const Figure& figure) { return figure.name == wanted; });
+  };
+  const auto figure = named(name);
+  if (figure == figures.end() || named(cost_view) == figures.end()) {
+    throw std::logic_error("SetCostView: no figure " + name + " or " + cost_view);
+  }
+  figure->cost_view = cost_view;
 }
 
 int CostPartner(const std::vector<const Figure*>& figures, std::size_t index) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "program/cost_view.h"
@@ -103,4 +104,12 @@ TEST_CASE("CostPartner: a figure's cost view, and back, by name wherever it stan
   CHECK(cgfs::CostPartner(figures, 0) == 2);             // the view: back to costly
   CHECK(cgfs::CostPartner(figures, 1) == -1);            // plain has none
   CHECK(cgfs::CostPartner({&costly, &plain}, 0) == -1);  // its view not in the list
+}
+
+TEST_CASE("SetCostView pairs two figures by name, and refuses a name the list lacks", "[cost]") {
+  std::vector<cgfs::Figure> figures = {{"a", "", {}}, {"a-view", "", {}}};
+  cgfs::SetCostView(figures, "a", "a-view");
+  CHECK(figures[0].cost_view == "a-view");
+  CHECK_THROWS_AS(cgfs::SetCostView(figures, "a", "b-view"), std::logic_error);
+  CHECK_THROWS_AS(cgfs::SetCostView(figures, "b", "a-view"), std::logic_error);
 }

@@ -22,6 +22,11 @@ struct Figure {
   std::string cost_view = {};
 };
 
+// Gives the figure named `name` the cost view named `cost_view` (the C key's pair);
+// std::logic_error if the list has no figure of either name.
+void SetCostView(std::vector<Figure>& figures, const std::string& name,
+                 const std::string& cost_view);
+
 // The index in `figures` of the figure the C key switches to from figures[index]: its
 // cost view, or the figure whose cost view it is; -1 when neither is in the list.
 int CostPartner(const std::vector<const Figure*>& figures, std::size_t index);
