@@ -173,9 +173,8 @@ std::string FunctionCasesNote(const ReportEntry& entry) {
   const std::string number = entry.chapter.substr(0, 2);
   return "<p class=\"cases\">Its functions one at a time, on the cases of <a href=\"" +
          Escaped(FileUrl(cases)) + "\">" + Escaped(entry.chapter) +
-         ".json</a>: <code>python3 tools/check-functions/python/check-functions.py " + number +
-         " YOUR_FILE.py</code> or <code>node tools/check-functions/js/check-functions.js " +
-         number + " YOUR_FILE.js</code> (docs/students.md).</p>";
+         ".json</a>: <code>node tools/check-functions/check-functions.js " + number +
+         " YOUR_FILE</code> (a Python or JavaScript chapter; docs/students.md).</p>";
 }
 
 }  // namespace

@@ -1,0 +1,297 @@
+#!/usr/bin/env node
+// Checks a student's chapter of "Computer Graphics from Scratch", written in Python or
+// JavaScript, one book function at a time, against the cases our C++ tests run
+// (tests/cases/NN-name.json):
+//
+//     node tools/check-functions/check-functions.js CHAPTER YOUR_FILE [--adapter FILE] [--time-limit S]
+//     node tools/check-functions/check-functions.js --adapter-template [CHAPTER YOUR_FILE | python | js]
+//
+// YOUR_FILE is a Python module (.py), or JavaScript: a plain script, a CommonJS or ES
+// module (.js, .cjs, .mjs), or a web page with the chapter's <script> (.html), as the
+// book's demo pages are. Your code runs in a process of its own (runners/), which is sent
+// each case's inputs and answers with what your function returned; the verdict, against
+// the expected values it never sees, is made here (core/). docs/students.md says more.
+// Exit status: 0 every case passed, 1 a case failed or your file cannot be checked, 2 a
+// wrong command line.
+"use strict";
+
+const { spawn } = require("child_process");
+const crypto = require("crypto");
+const fs = require("fs");
+const path = require("path");
+const sandbox = require("./sandbox.js");
+
+const ROOT = path.resolve(__dirname, "..", "..");
+const CASES_DIR = path.join(ROOT, "tests", "cases");
+const LOAD_LIMIT = 60;  // seconds a file may take to load, apart from its cases' limits
+const GRACE = 2;  // seconds past a case's limit before its process is ended from outside
+const MAX_LINE = 5 << 20;  // characters of one answer
+
+const USAGE = "usage: check-functions.js CHAPTER YOUR_FILE [--adapter FILE] [--time-limit SECONDS]\n" +
+  "       check-functions.js --adapter-template [CHAPTER YOUR_FILE | python | js]";
+
+class Usage extends Error {}
+
+function languageOf(file) {
+  if (/\.py$/i.test(file)) return "python";
+  if (/\.(js|cjs|mjs|html?)$/i.test(file)) return "javascript";
+  throw new Usage(`${file}: give a Python file (.py) or JavaScript (.js, .cjs, .mjs, or a page, .html)`);
+}
+
+function parse(argv) {
+  const options = { timeLimit: 5 };
+  const positional = [];
+  const value = (i) => {
+    if (i >= argv.length || argv[i].startsWith("--")) throw new Usage(`${argv[i - 1]} needs a value (${USAGE.split("\n")[0]})`);
+    return argv[i];
+  };
+  for (let i = 0; i < argv.length; ++i) {
+    if (argv[i] === "--adapter") options.adapter = value(++i);
+    else if (argv[i] === "--time-limit") options.timeLimit = Number(value(++i));
+    else if (argv[i] === "--adapter-template") options.template = true;
+    else if (argv[i] === "--help" || argv[i] === "-h") options.help = true;
+    else if (argv[i].startsWith("-") && argv[i] !== "-") throw new Usage(`unknown option ${argv[i]} (${USAGE.split("\n")[0]})`);
+    else positional.push(argv[i]);
+  }
+  if (options.help) return options;
+  if (options.template) {
+    if (positional.length === 1 && /^(python|js|javascript)$/.test(positional[0])) {
+      options.templateLanguage = positional[0] === "python" ? "python" : "javascript";
+      return options;
+    }
+    if (positional.length !== 0 && positional.length !== 2) throw new Usage(`--adapter-template takes a chapter and your file, or python or js (${USAGE.split("\n")[1].trim()})`);
+  } else if (positional.length !== 2) {
+    throw new Usage(`give a chapter and your file (${USAGE.split("\n")[0]})`);
+  }
+  [options.chapter, options.module] = positional;
+  if (!(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
+  for (const file of [options.module, options.adapter]) {
+    if (file === undefined) continue;
+    let stat;
+    try {
+      stat = fs.statSync(file);
+    } catch {
+      throw new Usage(`${file}: no such file`);
+    }
+    if (!stat.isFile()) throw new Usage(`${file}: not a file`);
+  }
+  if (options.module) options.language = languageOf(options.module);
+  if (options.adapter && languageOf(options.adapter) !== options.language) {
+    throw new Usage(`${options.adapter}: an adapter is in your chapter's language (${options.language})`);
+  }
+  return options;
+}
+
+// Where Debian (or npm) keeps acorn, which the JavaScript runner parses chapters with.
+function nodePath() {
+  const candidates = ["/usr/share/nodejs", "/usr/lib/nodejs", ...require.resolve.paths("acorn")];
+  const found = candidates.filter((dir) => fs.existsSync(path.join(dir, "acorn-globals", "index.js")));
+  if (found.length === 0) throw new Usage("a JavaScript chapter needs acorn and acorn-globals: on Debian, sudo apt install node-acorn");
+  return found.join(path.delimiter);
+}
+
+// The runner's command, in the sandbox where it can run.
+function command(options, seconds) {
+  let run;
+  if (options.language === "python") {
+    const python = sandbox.pythonInterpreter();
+    if (!python) throw new Usage("a Python chapter needs python3 (Debian: sudo apt install python3)");
+    run = { file: python.executable, args: ["-B", path.join(__dirname, "runners", "python_runner.py")],
+      env: { PYTHONDONTWRITEBYTECODE: "1" } };
+  } else {
+    run = { file: process.execPath, args: ["--max-old-space-size=2048", "--stack-size=4000",
+      path.join(__dirname, "runners", "js_runner.mjs")], env: { NODE_PATH: nodePath() } };
+  }
+  if (sandbox.why()) return run;
+  const folders = [...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(path.resolve(file))))];
+  return sandbox.sandboxed(run, { language: options.language, folders, seconds });
+}
+
+// The student's code in a process of its own, spoken to through two pipes (its file
+// descriptors 3 and 4); a case at a time, each answer checked to be the answer to that
+// case; a process that does not answer in time is ended, and a new one takes over.
+class ProcessRunner {
+  constructor(options, totalCases) {
+    Object.assign(this, { options, language: options.language, process: null, id: 0 });
+    this.started = Date.now();
+    this.bound = (totalCases * options.timeLimit + LOAD_LIMIT) * 1000;
+    this.totalCases = totalCases;
+  }
+
+  start() {
+    const { file, args, env } = command(this.options, this.bound / 1000 + LOAD_LIMIT);
+    const child = spawn(file, args, {
+      cwd: path.dirname(path.resolve(this.options.module)), detached: true,
+      stdio: ["ignore", "ignore", "ignore", "pipe", "pipe"],
+      env: { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env },
+    });
+    this.process = { child, buffer: "", lines: [], waiting: null, ended: null };
+    const state = this.process;
+    const wake = () => { const w = state.waiting; state.waiting = null; if (w) w(); };
+    child.stdio[4].setEncoding("utf8");
+    child.stdio[4].on("data", (chunk) => {
+      state.buffer += chunk;
+      let at;
+      while ((at = state.buffer.indexOf("\n")) >= 0) {
+        state.lines.push(state.buffer.slice(0, at));
+        state.buffer = state.buffer.slice(at + 1);
+      }
+      if (state.buffer.length > MAX_LINE) { state.lines.push(null); state.buffer = ""; }
+      wake();
+    });
+    child.stdio[3].on("error", () => {});
+    child.on("error", (error) => { state.ended ??= `error ${error.message}`; wake(); });
+    child.on("exit", (status, signal) => { state.ended ??= signal ? `signal ${signal}` : `status ${status}`; wake(); });
+    child.stdio[4].on("end", wake);
+  }
+
+  // The next message, or { timeout } / { ended } / { garbled }.
+  async next(seconds) {
+    const state = this.process;
+    const deadline = Date.now() + seconds * 1000;
+    while (state.lines.length === 0 && !state.ended) {
+      const left = deadline - Date.now();
+      if (left <= 0) return { timeout: true };
+      await new Promise((resolve) => {
+        const timer = setTimeout(resolve, left);
+        state.waiting = () => { clearTimeout(timer); resolve(); };
+      });
+    }
+    if (state.lines.length === 0) return { ended: state.ended };
+    const line = state.lines.shift();
+    try {
+      const message = line === null ? null : JSON.parse(line);
+      if (message && typeof message === "object" && !Array.isArray(message)) return message;
+    } catch {
+      // said below
+    }
+    return { garbled: "answered with something that is not an answer" };
+  }
+
+  send(message) {
+    try {
+      this.process.child.stdio[3].write(`${JSON.stringify(message)}\n`);
+    } catch {
+      // the process has ended: the next message says so
+    }
+  }
+
+  stop() {
+    if (!this.process) return;
+    try {
+      process.kill(-this.process.child.pid, "SIGKILL");
+    } catch {
+      // already gone
+    }
+    this.process.child.stdio[3].destroy();
+    this.process.child.stdio[4].destroy();
+    this.process = null;
+  }
+
+  async load(functions, names) {
+    this.loadRequest = { load: { module: path.resolve(this.options.module), adapter: this.options.adapter && path.resolve(this.options.adapter), functions, names } };
+    this.start();
+    this.send(this.loadRequest);
+    const message = await this.next(LOAD_LIMIT);
+    const { CheckError } = await import("./core/report.mjs");
+    const fail = (text) => { this.stop(); throw new CheckError(text); };
+    if (message.timeout) fail(`your module ${this.options.module} does not load: still running after ${LOAD_LIMIT} s`);
+    if (message.ended) fail(`your module ${this.options.module} does not load: it ended the process (exit ${message.ended}) while loading`);
+    if (typeof message.load_error === "string") fail(message.load_error.split("\n")[0].slice(0, 500));
+    const facts = message.loaded;
+    if (!facts || typeof facts !== "object" || typeof facts.functions !== "object") fail(`your module ${this.options.module} does not load: it said something else while loading`);
+    return facts;
+  }
+
+  async run(request) {
+    if (Date.now() - this.started > this.bound) return { stopped: true };
+    if (!this.process) {
+      this.start();
+      this.send(this.loadRequest);
+      const message = await this.next(LOAD_LIMIT);
+      if (!message.loaded) {
+        this.stop();
+        return { garbled: "a new process for this case could not load your module" };
+      }
+    }
+    const id = ++this.id, nonce = crypto.randomBytes(8).toString("hex");
+    const limit = this.options.timeLimit;
+    this.send({ ...request, id, nonce, limit });
+    const answer = await this.next(limit + GRACE);
+    if (answer.timeout || answer.ended || answer.garbled) {
+      this.stop();
+      return { ...answer, limit };
+    }
+    if (answer.id !== id || answer.nonce !== nonce) {
+      this.stop();
+      return { garbled: "answered out of turn (not this case's answer)" };
+    }
+    return { ...answer, limit };
+  }
+
+  stoppedLine() {
+    return `stopped after ${Math.round((Date.now() - this.started) / 1000)} s, the most this check may take ` +
+      `(${this.totalCases} cases × ${this.options.timeLimit} s + ${LOAD_LIMIT} s to load): the cases after this one did not run`;
+  }
+}
+
+function caseFiles() {
+  const files = {};
+  for (const name of fs.readdirSync(CASES_DIR).filter((each) => each.endsWith(".json")).sort()) {
+    files[name.replace(/\.json$/, "")] = JSON.parse(fs.readFileSync(path.join(CASES_DIR, name), "utf8"));
+  }
+  return files;
+}
+
+async function main(argv) {
+  const options = parse(argv);
+  if (options.help) {
+    process.stdout.write(`${USAGE}\n\nChecks your chapter's functions, one by one, against the cases of tests/cases/ (docs/students.md).\n`);
+    return 0;
+  }
+  const { chapterNamed, sections } = await import("./core/plan.mjs");
+  const { check } = await import("./core/report.mjs");
+  const { adapterTemplate } = await import("./core/template.mjs");
+  if (options.templateLanguage || (options.template && !options.module)) {
+    process.stdout.write(adapterTemplate(options.templateLanguage ?? "python"));
+    return 0;
+  }
+  const files = caseFiles();
+  const chapter = chapterNamed(options.chapter, Object.keys(files));
+  if (!chapter) {
+    throw new Usage(`no chapter '${options.chapter}': give a number such as 02 or a folder name; there are cases for ${Object.keys(files).join(", ")}`);
+  }
+  const totalCases = sections(chapter, files).flatMap((s) => s.entries).reduce((n, e) => n + e.cases.length, 0);
+  const runner = new ProcessRunner(options, totalCases);
+  try {
+    if (options.template) {
+      const { functionsOf } = await import("./core/plan.mjs");
+      const { NAMES } = await import("./core/names.mjs");
+      const facts = await runner.load(functionsOf(sections(chapter, files)), NAMES);
+      process.stdout.write(adapterTemplate(options.language, facts));
+      return 0;
+    }
+    const { lines, failed } = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter) });
+    const unsandboxed = sandbox.why();
+    if (unsandboxed) {
+      lines.unshift(`note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`);
+    }
+    process.stdout.write(`${lines.join("\n")}\n`);
+    return failed ? 1 : 0;
+  } finally {
+    runner.stop();
+  }
+}
+
+main(process.argv.slice(2)).then((status) => { process.exitCode = status; }, (error) => {
+  if (error instanceof Usage) {
+    process.stderr.write(`check-functions.js: error: ${error.message}\n`);
+    process.exitCode = 2;
+  } else if (error?.constructor?.name === "CheckError") {
+    process.stderr.write(`check-functions.js: ${error.message}\n`);
+    process.exitCode = 1;
+  } else {
+    process.stderr.write(`check-functions.js: ${error?.stack ?? error}\n`);
+    process.exitCode = 2;
+  }
+});

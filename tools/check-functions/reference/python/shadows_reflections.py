@@ -1,0 +1,91 @@
+# cases: 04 (tests/cases/04-shadows-reflections.json)
+"""Chapter 4, "Shadows and Reflections", in plain Python, as the book writes it: the
+checker's reference (tools/check-functions). ClosestIntersection (Listing 4-2),
+ComputeLighting with shadows (Listing 4-3), ReflectRay (Listing 4-4) and the
+recursive TraceRay (Listing 4-5)."""
+
+import math
+
+from basic_rays import IntersectRaySphere, dot, subtract
+from light import added, length, scaled
+
+scene = None
+BACKGROUND_COLOR = (0, 0, 0)
+EPSILON = 0.001  # where shadow and reflected rays start, so a point does not hit itself
+
+
+# Listing 4-2: the nearest sphere the ray meets in [t_min, t_max], and its t.
+def ClosestIntersection(O, D, t_min, t_max):
+    closest_t = math.inf
+    closest_sphere = None
+    for sphere in scene.spheres:
+        t1, t2 = IntersectRaySphere(O, D, sphere)
+        if t_min <= t1 <= t_max and t1 < closest_t:
+            closest_t = t1
+            closest_sphere = sphere
+        if t_min <= t2 <= t_max and t2 < closest_t:
+            closest_t = t2
+            closest_sphere = sphere
+    return closest_sphere, closest_t
+
+
+# Listing 4-3: chapter 3's lighting, skipping the lights something hides from P.
+def ComputeLighting(P, N, V, s):
+    i = 0.0
+    for light in scene.lights:
+        if light.type == "ambient":
+            i += light.intensity
+            continue
+        if light.type == "point":
+            L = subtract(light.position, P)
+            t_max = 1
+        else:
+            L = light.direction
+            t_max = math.inf
+
+        # Shadow check
+        shadow_sphere, shadow_t = ClosestIntersection(P, L, EPSILON, t_max)
+        if shadow_sphere is not None:
+            continue
+
+        # Diffuse
+        n_dot_l = dot(N, L)
+        if n_dot_l > 0:
+            i += light.intensity * n_dot_l / (length(N) * length(L))
+
+        # Specular
+        if s != -1:
+            R = ReflectRay(L, N)
+            r_dot_v = dot(R, V)
+            if r_dot_v > 0:
+                i += light.intensity * (r_dot_v / (length(R) * length(V))) ** s
+    return i
+
+
+# Listing 4-4: R mirrored about N.
+def ReflectRay(R, N):
+    return subtract(scaled(2 * dot(N, R), N), R)
+
+
+# Listing 4-5: the local colour, and what the surface reflects, recursion_depth deep.
+def TraceRay(O, D, t_min, t_max, recursion_depth):
+    closest_sphere, closest_t = ClosestIntersection(O, D, t_min, t_max)
+    if closest_sphere is None:
+        return scene.background_color
+
+    # The local colour
+    P = added(O, scaled(closest_t, D))
+    N = subtract(P, closest_sphere.center)
+    N = scaled(1 / length(N), N)
+    local_color = scaled(ComputeLighting(P, N, scaled(-1, D), closest_sphere.specular),
+                         closest_sphere.color)
+
+    # At the recursion limit, or on a surface that is not reflective, we are done
+    r = closest_sphere.reflective
+    if recursion_depth <= 0 or r <= 0:
+        return local_color
+
+    # The reflected colour
+    R = ReflectRay(scaled(-1, D), N)
+    reflected_color = TraceRay(P, R, EPSILON, math.inf, recursion_depth - 1)
+    return added(scaled(1 - r, local_color), scaled(r, reflected_color))

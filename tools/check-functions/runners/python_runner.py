@@ -1,0 +1,719 @@
+"""The process a student's Python chapter runs in, for the function checker
+(tools/check-functions/check-functions.js, docs/students.md).
+
+It loads the chapter (and the student's adapter, if any), says what it finds there (the
+book's functions, their parameters, the module-level names each one reads), then runs one
+case at a time: it builds the case's inputs, puts the case's canvas, viewport and scene
+where the chapter reads them, calls the function and answers with what it returned, as
+plain data. It is never told what a case expects and decides nothing: the checker
+judges every answer in a process of its own.
+
+Messages are JSON lines: requests on file descriptor 3, answers on 4 (the checker's
+pipes; nothing of them is in sys.argv). Each case runs in a child process of its own,
+forked from this one once the chapter is loaded, so that a case that never returns ends
+alone, after its time limit, without loading the chapter again.
+"""
+
+import ast
+import builtins
+import collections
+import dis
+import importlib.util
+import inspect
+import json
+import math
+import os
+import select
+import signal
+import sys
+import textwrap
+import time
+import traceback
+import types
+from pathlib import Path
+
+sys.dont_write_bytecode = True  # never a __pycache__ in the student's folder
+
+RUNNER_DIR = str(Path(__file__).resolve().parent)
+MAX_ANSWER = 4 << 20  # bytes of one answer
+MAX_ITEMS = 200_000  # numbers, strings and lists in one answer
+MAX_PIXELS = 100_000  # PutPixel calls one case may make
+
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: chapter 8's intensity
+Vector = collections.namedtuple("Vector", "x y z")
+
+
+class LoadError(Exception):
+    """The student's module or adapter does not load."""
+
+
+class Record(types.SimpleNamespace):
+    """One of the book's records (a sphere, a light, a scene...): its fields read as
+    attributes or as a dict's keys, sphere.radius or sphere["radius"]."""
+
+    def __getitem__(self, name):
+        try:
+            return getattr(self, name)
+        except AttributeError:
+            raise KeyError(name) from None
+
+    def __setitem__(self, name, value):
+        setattr(self, name, value)
+
+    def __contains__(self, name):
+        return hasattr(self, name)
+
+    def __iter__(self):
+        return iter(vars(self))
+
+    def __len__(self):
+        return len(vars(self))
+
+    def get(self, name, default=None):
+        return getattr(self, name, default)
+
+    def keys(self):
+        return vars(self).keys()
+
+    def values(self):
+        return vars(self).values()
+
+    def items(self):
+        return vars(self).items()
+
+
+class Texture:
+    """texture[i][j]: the texel in column i, row j (rows from the top), as the book
+    indexes a texture, with its width and height."""
+
+    def __init__(self, width, height, texels):
+        self.width, self.height = width, height
+        self.columns = [[texels[j * width + i] for j in range(height)] for i in range(width)]
+
+    def __getitem__(self, i):
+        return self.columns[i]
+
+
+def number(value):
+    """A number of the cases: JSON's (a whole number stays an int, as the book's pixel
+    coordinates and indices are), or "inf" / "-inf"."""
+    if value == "inf":
+        return math.inf
+    if value == "-inf":
+        return -math.inf
+    return value if isinstance(value, int) and not isinstance(value, bool) else float(value)
+
+
+def numbers(value):
+    return tuple(number(each) for each in value)
+
+
+class DefaultAdapter:
+    """How the book's data reach the student's code. An adapter file may define any of
+    these as plain functions to build its own types instead (docs/students.md)."""
+
+    @staticmethod
+    def vector(value):
+        return Vector(*numbers(value))
+
+    @staticmethod
+    def point(value):
+        return Point(*numbers(value))
+
+    @staticmethod
+    def color(value):
+        return numbers(value)
+
+    @staticmethod
+    def matrix(rows):
+        """A 4x4 matrix as the book writes it: a tuple of its rows."""
+        return tuple(numbers(row) for row in rows)
+
+    @classmethod
+    def vectors(cls, value):
+        return [cls.vector(each) for each in value]
+
+    @classmethod
+    def plane(cls, value):
+        return Record(normal=cls.vector(value["normal"]), D=number(value["D"]))
+
+    @staticmethod
+    def booleans(value):
+        return [bool(each) for each in value]
+
+    @classmethod
+    def tangent_basis(cls, value):
+        """A triangle's tangent T and bitangent B (chapter 15's normal mapping)."""
+        return Record(T=cls.vector(value["T"]), B=cls.vector(value["B"]))
+
+    @classmethod
+    def triangle(cls, value):
+        """A triangle of a model: v, three indices into its vertex list, and color."""
+        return Record(v=list(value["v"]), color=cls.color(value["color"]))
+
+    @classmethod
+    def model(cls, value):
+        return Record(vertices=cls.vectors(value["vertices"]),
+                      triangles=[cls.triangle(each) for each in value["triangles"]])
+
+    @classmethod
+    def texture(cls, value):
+        return Texture(value["width"], value["height"], [cls.color(each) for each in value["texels"]])
+
+    @classmethod
+    def transform(cls, value):
+        return Record(scale=number(value["scale"]), rotation=cls.matrix(value["rotation"]),
+                      translation=cls.vector(value["translation"]))
+
+    @classmethod
+    def sphere(cls, value):
+        return Record(center=cls.vector(value["center"]), radius=number(value["radius"]),
+                      color=cls.color(value["color"]), specular=number(value.get("specular", -1)),
+                      reflective=number(value.get("reflective", 0)))
+
+    @classmethod
+    def light(cls, value):
+        """A light with its type's fields only: an ambient light has no position or
+        direction, a point light a position, a directional light a direction."""
+        light = Record(type=value["type"], intensity=number(value["intensity"]))
+        for field in ("position", "direction"):
+            if field in value:
+                setattr(light, field, cls.vector(value[field]))
+        return light
+
+    @classmethod
+    def spheres(cls, value):
+        return [cls.sphere(each) for each in value]
+
+    @classmethod
+    def lights(cls, value):
+        return [cls.light(each) for each in value]
+
+    @classmethod
+    def scene(cls, value):
+        return Record(spheres=cls.spheres(value.get("spheres", [])),
+                      lights=cls.lights(value.get("lights", [])),
+                      background_color=cls.color(value.get("background_color", [255, 255, 255])))
+
+    @classmethod
+    def camera(cls, value):
+        """Chapter 5's camera: its position, and its rotation, a 3x3 matrix row by row."""
+        return Record(position=cls.vector(value["position"]),
+                      rotation=tuple(numbers(row) for row in value["rotation"]))
+
+    @staticmethod
+    def rows(value):
+        return tuple(numbers(row) for row in value)
+
+    @staticmethod
+    def depth_buffer(canvas):
+        """Chapter 12's buffer, depth_buffer[x][y] with x and y from 0: 0 is 1/z
+        infinitely far."""
+        return [[0] * canvas["height"] for _ in range(canvas["width"])]
+
+
+def decoded(value):
+    """A case's JSON with "inf" and "-inf" made numbers, so that adapters see numbers only."""
+    if value in ("inf", "-inf"):
+        return number(value)
+    if isinstance(value, list):
+        return [decoded(each) for each in value]
+    if isinstance(value, dict):
+        return {key: decoded(each) for key, each in value.items()}
+    return value
+
+
+def at(given, path):
+    """given's value at a dotted path ("canvas.width"), or None."""
+    for key in path.split("."):
+        if not isinstance(given, dict) or key not in given:
+            return None
+        given = given[key]
+    return given
+
+
+def one_line(error):
+    """An exception in one line, at the last line of the student's code it went through
+    (for a syntax error, where Python found it)."""
+    if isinstance(error, SyntaxError) and error.filename:
+        return f"{type(error).__name__}: {error.msg} (at {Path(error.filename).name}:{error.lineno})"
+    frames = [frame for frame in traceback.extract_tb(error.__traceback__)
+              if not frame.filename.startswith(RUNNER_DIR) and not frame.filename.startswith("<frozen")]
+    place = f" (at {Path(frames[-1].filename).name}:{frames[-1].lineno})" if frames else ""
+    text = str(error).splitlines()[0] if str(error) else ""
+    return f"{type(error).__name__}{': ' + text if text else ''}{place}"
+
+
+def load(path, name):
+    """The student's module (or adapter), loaded from its file, its folder on the import
+    path, run as it would be imported (not as __main__)."""
+    path = Path(path)
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    if spec is None or spec.loader is None:
+        raise LoadError(f"{name} {path} does not load: not a Python file")
+    module = importlib.util.module_from_spec(spec)
+    sys.path.insert(0, str(path.resolve().parent))
+    try:
+        spec.loader.exec_module(module)
+    except BaseException as error:  # whatever their file does, one line
+        raise LoadError(f"{name} {path} does not load: {one_line(error)}") from None
+    return module
+
+
+# What the checker is told about the chapter: which book functions it defines, their
+# parameters, and the module-level names each reads (through the functions of the
+# student's own files it calls), so that a case whose canvas or scene never reaches the
+# code is named as such, not as a mistake in it.
+
+def code_reads(code):
+    """The global names a code object (and the functions and lambdas inside it) loads."""
+    for instruction in dis.get_instructions(code):
+        if instruction.opname in ("LOAD_GLOBAL", "LOAD_NAME") and isinstance(instruction.argval, str):
+            yield instruction.argval
+    for constant in code.co_consts:
+        if isinstance(constant, types.CodeType):
+            yield from code_reads(constant)
+
+
+def is_students(function, folder):
+    return isinstance(function, types.FunctionType) and \
+        os.path.abspath(function.__code__.co_filename).startswith(folder + os.sep)
+
+
+def module_label(namespace, main):
+    """"" for the chapter's own module, else the file a namespace belongs to."""
+    return "" if namespace is main.__dict__ else Path(namespace.get("__file__") or "?").name
+
+
+def global_reads(function, main, folder, names, wanted=()):
+    """{"reads": [[name, file, "data" | "missing"]...], "complete": whether every function
+    it calls could be followed}. A name of the checker's table is a read, never followed
+    (the checker sets it)."""
+    reads, seen, stack, complete, calls = {}, set(), [function], True, set()
+    while stack:
+        current = stack.pop()
+        if current in seen:
+            continue
+        seen.add(current)
+        namespace = current.__globals__
+        for name in set(code_reads(current.__code__)):
+            if name in names:
+                reads[(name, module_label(namespace, main))] = "data" if name in namespace else "missing"
+                continue
+            if name in namespace:
+                value = namespace[name]
+            elif hasattr(builtins, name):
+                continue
+            else:
+                reads[(name, module_label(namespace, main))] = "missing"
+                continue
+            if isinstance(value, types.FunctionType):
+                if is_students(value, folder):
+                    stack.append(value)
+                    if name in wanted and value is not function:
+                        calls.add(name)
+                continue
+            if isinstance(value, types.ModuleType) and os.path.abspath(
+                    getattr(value, "__file__", None) or "/").startswith(folder + os.sep):
+                complete = False  # a module of the student's: what is called in it is not followed
+                continue
+            if isinstance(value, (type, types.ModuleType, types.BuiltinFunctionType)):
+                continue
+            if callable(value):  # a partial, a bound method: not followed
+                complete = False
+                continue
+            reads[(name, module_label(namespace, main))] = "data"
+    return {"reads": [[name, file, kind] for (name, file), kind in sorted(reads.items())],
+            "complete": complete, "calls": sorted(calls)}
+
+
+def bound_defaults(function):
+    """The parameters whose default is written with a module-level name (spheres=SPHERES):
+    the value is taken once, when the def runs."""
+    try:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(function)))
+    except (OSError, TypeError, SyntaxError):
+        return []
+    definition = tree.body[0] if tree.body else None
+    if not isinstance(definition, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        return []
+    arguments = definition.args
+    positional = arguments.posonlyargs + arguments.args
+    pairs = list(zip(positional[len(positional) - len(arguments.defaults):], arguments.defaults))
+    pairs += [(arg, default) for arg, default in zip(arguments.kwonlyargs, arguments.kw_defaults) if default]
+    bound = []
+    for arg, default in pairs:
+        names = [node.id for node in ast.walk(default) if isinstance(node, ast.Name)
+                 and node.id in function.__globals__ and not callable(function.__globals__[node.id])
+                 and not isinstance(function.__globals__[node.id], types.ModuleType)]
+        if names:
+            bound.append({"parameter": arg.arg, "default": ast.unparse(default), "names": names})
+    return bound
+
+
+def parameters(function):
+    """The names of the positional parameters, and how many have no default."""
+    try:
+        signature = inspect.signature(function)
+    except (TypeError, ValueError):
+        return None
+    kinds = (inspect.Parameter.POSITIONAL_ONLY, inspect.Parameter.POSITIONAL_OR_KEYWORD)
+    listed = [p for p in signature.parameters.values() if p.kind in kinds]
+    varargs = any(p.kind == inspect.Parameter.VAR_POSITIONAL for p in signature.parameters.values())
+    return {"names": [p.name for p in listed], "required": sum(p.default is p.empty for p in listed),
+            "more": varargs}
+
+
+def described(value):
+    """A module-level value in a few words, for the report and the adapter template."""
+    if isinstance(value, bool) or value is None:
+        return repr(value)
+    if isinstance(value, (int, float)):
+        return f"{value:g}" if isinstance(value, float) else str(value)
+    if isinstance(value, (list, tuple, dict, set)):
+        return f"a {type(value).__name__} of {len(value)}"
+    return f"a {type(value).__name__}"
+
+
+def facts(main, wanted, folder, names):
+    functions = {}
+    for name in wanted:
+        function = getattr(main, name, None)
+        if not callable(function):
+            continue
+        fact = {"parameters": parameters(function), "reads": None, "complete": False, "bound": [], "calls": []}
+        if isinstance(function, types.FunctionType):
+            fact.update(global_reads(function, main, folder, names, wanted))
+            fact["bound"] = bound_defaults(function)
+        functions[name] = fact
+    data = {name: described(value) for name, value in vars(main).items()
+            if not name.startswith("__") and not callable(value)
+            and not isinstance(value, (types.ModuleType, type))}
+    return {"functions": functions, "data": data, "defined": sorted(n for n in vars(main) if not n.startswith("__")),
+            "reachable": "all"}
+
+
+# Placing a case's canvas, viewport and scene where the chapter reads them.
+
+class Drawing:
+    """The checker's PutPixel: records every call as it is made (x, y and the colour,
+    unrounded); the checker keeps them as a canvas would."""
+
+    def __init__(self):
+        self.calls = []
+
+    def PutPixel(self, x, y, color):
+        if len(self.calls) >= MAX_PIXELS:
+            raise RuntimeError(f"more than {MAX_PIXELS} PutPixel calls")
+        self.calls.append([x, y, color])
+
+
+class Chapter:
+    """The student's chapter as loaded: its module, the other modules of their folder it
+    brought in, their adapter, what the checker was told about it, and the checker's
+    table of names (book's and demos') through which a case's data reach it."""
+
+    def __init__(self, main, folder, adapter, names, wanted):
+        self.main, self.folder, self.adapter, self.names = main, folder, adapter, names
+        self.facts = facts(main, wanted, folder, names)
+        self.modules = {"": main}
+        for module in list(sys.modules.values()):
+            file = getattr(module, "__file__", None)
+            if module is not main and file and os.path.abspath(file).startswith(folder + os.sep):
+                self.modules[Path(file).name] = module
+        self.read = {}  # file label -> the names its functions read
+        for fact in self.facts["functions"].values():
+            for name, label, _ in fact["reads"] or []:
+                self.read.setdefault(label, set()).add(name)
+
+    def targets(self, name, dialect):
+        """The modules a name of the table is set on: the chapter's module for the
+        book's names, and every module of the student's that defines or reads it."""
+        return [module for label, module in self.modules.items()
+                if (label == "" and dialect == "book") or name in vars(module)
+                or name in self.read.get(label, ())]
+
+    def place(self, given):
+        """Sets every name of the table that the case gives; the names set."""
+        placed = set()
+        for name, spec in self.names.items():
+            value = at(given, spec["path"])
+            targets = self.targets(name, spec["dialect"]) if value is not None else []
+            for module in targets:
+                if spec.get("kind") == "canvas":  # the demos' canvas: its size, set in place
+                    set_size(module, name, value)
+                else:
+                    setattr(module, name, self.built(spec.get("kind", "number"), value, given))
+            if targets:
+                placed.add(name)
+        return placed
+
+    def built(self, kind, value, given):
+        if kind == "number":
+            return number(value)
+        if kind == "depth_buffer":
+            return self.adapter.depth_buffer(given["canvas"])
+        if kind == "PutPixel":
+            return value  # the Drawing's own
+        return getattr(self.adapter, kind)(value)
+
+    def fingerprints(self, function):
+        """What the names a function reads hold now, to see which an adapter set."""
+        fact = self.facts["functions"].get(function, {})
+        found = {}
+        for name, label, _ in fact.get("reads") or []:
+            module = self.modules.get(label)
+            if module is not None:
+                found[name] = fingerprint(getattr(module, name, None))
+        return found
+
+    def set_up(self, function, given):
+        """The case's data put in place: the checker's names, then the adapter's setup,
+        if it has one, for names of the student's own; the names set (those of the
+        adapter's that the function reads)."""
+        placed = self.place(given)
+        if not hasattr(self.adapter, "own_setup"):
+            return placed
+        before = self.fingerprints(function)
+        setup = self.adapter.own_setup
+        try:
+            takes_adapter = len(inspect.signature(setup).parameters) >= 3
+        except (TypeError, ValueError):
+            takes_adapter = False
+        setup(self.main, given, self.adapter) if takes_adapter else setup(self.main, given)
+        after = self.fingerprints(function)
+        return placed | {name for name in after if after[name] != before.get(name)}
+
+
+def set_size(module, name, canvas):
+    """A canvas's width and height set on the object a module holds (attributes or keys),
+    or a record of them where it holds none."""
+    held = getattr(module, name, None)
+    size = {"width": canvas["width"], "height": canvas["height"]}
+    if isinstance(held, dict):
+        held.update(size)
+    elif held is not None and hasattr(held, "__dict__"):
+        for key, value in size.items():
+            setattr(held, key, value)
+    else:
+        setattr(module, name, Record(**size))
+
+
+def fingerprint(value):
+    """The object a name holds and, one level down, what it holds: a list filled in
+    place (SPHERES[:] = ...) counts as set."""
+    if isinstance(value, (list, tuple)):
+        inside = tuple(map(id, value))
+    elif isinstance(value, dict):
+        inside = tuple((key, id(each)) for key, each in value.items())
+    elif hasattr(value, "__dict__"):
+        inside = tuple((key, id(each)) for key, each in vars(value).items())
+    else:
+        inside = ()
+    return (id(value), inside)
+
+
+def run_case(request, chapter):
+    """What the function made of one case: {"returned": ..., "arguments": ...,
+    "pixels": [...], "placed": [...]}, or {"raised": ...} / {"adapter_failed": ...}."""
+    given = decoded(request.get("given", {}))
+    drawing = None
+    if request.get("drawing"):
+        drawing = Drawing()
+        given.setdefault("canvas", {})["PutPixel"] = drawing.PutPixel
+    adapter = chapter.adapter
+    try:
+        placed = chapter.set_up(request["function"], given)
+        calls = [[argument(adapter, spec, decoded(call)) for spec in request["parameters"]]
+                 for call in request["calls"]]
+    except BaseException as error:
+        return {"adapter_failed": one_line(error)}
+    function = getattr(chapter.main, request["function"])
+    value, args = None, []
+    try:
+        for args in calls:
+            value = function(*args)
+    except BaseException as error:
+        return {"raised": one_line(error), "placed": sorted(placed)}
+    answer = {"placed": sorted(placed), "returned": value}
+    if drawing:
+        answer["pixels"] = drawing.calls
+    if hasattr(adapter, "own_result"):
+        try:
+            answer["returned"] = adapter.own_result(request["returns"], value, given)
+        except BaseException as error:
+            return {"adapter_failed": f"your adapter's result: {one_line(error)}"}
+    if request.get("arguments"):
+        answer["arguments"] = args
+    return answer
+
+
+def argument(adapter, spec, call):
+    """One argument of a call, built from the case's value(s) by its kind."""
+    name, kind = spec[0], spec[1]
+    value = [call[each] for each in spec[2]] if len(spec) > 2 else call[name]
+    return number(value) if kind == "number" else getattr(adapter, kind)(value)
+
+
+# Answers as plain data: numbers, strings, lists and records, nothing of the student's
+# types; infinities and NaN as the strings JSON lacks them for.
+
+def plain(value, budget, depth=0):
+    budget[0] -= 1
+    if budget[0] < 0 or depth > 12:
+        raise ValueError("too large")
+    if value is None or isinstance(value, (bool, str)):
+        return value[:200] if isinstance(value, str) else value
+    if isinstance(value, (int, float)):
+        value = float(value) if not isinstance(value, int) or abs(value) > 2 ** 53 else value
+        if isinstance(value, float) and not math.isfinite(value):
+            return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+        return value
+    if hasattr(value, "tolist") and callable(value.tolist):  # numpy
+        return plain(value.tolist(), budget, depth + 1)
+    if isinstance(value, dict) or isinstance(value, Record):
+        return {str(k): plain(v, budget, depth + 1) for k, v in list(value.items())[:1000]
+                if not callable(v)}
+    if isinstance(value, Texture):
+        return {"width": value.width, "height": value.height}
+    if isinstance(value, (list, tuple, range)) or (hasattr(value, "__iter__") and hasattr(value, "__len__")):
+        if len(value) > MAX_ITEMS:
+            raise ValueError("too large")
+        return [plain(each, budget, depth + 1) for each in value]
+    fields = {}
+    for name in ("x", "y", "z", "w", "h", "r", "g", "b", "center", "radius", "v", "triangles", "vertices"):
+        if hasattr(value, name) and not callable(getattr(value, name)):
+            fields[name] = plain(getattr(value, name), budget, depth + 1)
+    if not fields and hasattr(value, "__dict__"):
+        fields = {k: plain(v, budget, depth + 1) for k, v in list(vars(value).items())[:1000]
+                  if not k.startswith("_") and not callable(v)}
+    if fields:
+        return fields
+    return f"a {type(value).__name__}"
+
+
+def encoded(answer):
+    try:
+        text = json.dumps(plain(answer, [MAX_ITEMS]), allow_nan=False)
+    except (ValueError, TypeError, RecursionError):
+        return json.dumps({"unreadable": "returned something too large or too deep to send"})
+    if len(text) > MAX_ANSWER:
+        return json.dumps({"unreadable": "returned something too large to send"})
+    return text
+
+
+def adapted(adapter_module):
+    """The default adapter with the functions of the student's adapter in its place;
+    their setup and result, when they give them, as own_setup and own_result."""
+    class Adapter(DefaultAdapter):
+        pass
+    if adapter_module is not None:
+        for name in ("vector", "vectors", "point", "color", "booleans", "matrix", "plane",
+                     "transform", "triangle", "model", "texture", "tangent_basis", "sphere",
+                     "light", "spheres", "lights", "scene", "camera", "rows", "depth_buffer"):
+            if callable(getattr(adapter_module, name, None)):
+                setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
+        if callable(getattr(adapter_module, "setup", None)):
+            Adapter.own_setup = staticmethod(adapter_module.setup)
+        if callable(getattr(adapter_module, "result", None)):
+            Adapter.own_result = staticmethod(adapter_module.result)
+    return Adapter
+
+
+# The loop: a case at a time, each in a child process forked from this one.
+
+def in_child(request, chapter, write_end):
+    """Runs in the forked child: the case, its answer written to the parent's pipe."""
+    os.setpgid(0, 0)
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    try:
+        text = encoded(run_case(request, chapter))
+    except BaseException as error:  # the student's code made our own fail: say so
+        text = json.dumps({"raised": one_line(error)})
+    data = text.encode()
+    while data:
+        try:
+            data = data[os.write(write_end, data):]
+        except OSError:
+            break
+    os._exit(0)
+
+
+def run_in_child(request, chapter, limit):
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        os.close(read_end)
+        for fd in (3, 4):
+            os.close(fd)
+        in_child(request, chapter, write_end)
+    os.close(write_end)
+    chunks, size, deadline = [], 0, time.monotonic() + limit
+    timed_out = False
+    while True:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            timed_out = True
+            break
+        ready, _, _ = select.select([read_end], [], [], left)
+        if not ready:
+            timed_out = True
+            break
+        chunk = os.read(read_end, 65536)
+        if not chunk:
+            break
+        size += len(chunk)
+        if size > MAX_ANSWER + 1024:
+            break
+        chunks.append(chunk)
+    os.close(read_end)
+    for target in (-pid, pid):  # the child, and anything it started
+        try:
+            os.kill(target, signal.SIGKILL)
+        except OSError:
+            pass
+    _, status = os.waitpid(pid, 0)
+    if timed_out:
+        return {"timeout": True}
+    try:
+        answer = json.loads(b"".join(chunks))
+    except ValueError:
+        return {"ended": exit_text(status)}
+    return answer if isinstance(answer, dict) else {"ended": exit_text(status)}
+
+
+def exit_text(status):
+    if os.WIFSIGNALED(status):
+        return f"signal {os.WTERMSIG(status)}"
+    return f"status {os.WEXITSTATUS(status) if os.WIFEXITED(status) else status}"
+
+
+def main():
+    requests = os.fdopen(3, "rb")
+    answers = os.fdopen(4, "wb")
+
+    def answer(message):
+        answers.write((json.dumps(message) + "\n").encode())
+        answers.flush()
+
+    first = json.loads(requests.readline())["load"]
+    module_path = os.path.abspath(first["module"])
+    folder = os.path.dirname(module_path)
+    sys.argv = [first["module"]]  # as if run alone: nothing of the checker's
+    try:
+        adapter = adapted(load(first["adapter"], "your adapter") if first.get("adapter") else None)
+        main_module = load(module_path, "your module")
+    except LoadError as error:
+        answer({"load_error": str(error)})
+        return
+    chapter = Chapter(main_module, folder, adapter, first["names"], first["functions"])
+    answer({"loaded": chapter.facts})
+    for line in requests:
+        request = json.loads(line)
+        result = run_in_child(request, chapter, request["limit"])
+        result["id"], result["nonce"] = request["id"], request["nonce"]
+        answer(result)
+
+
+if __name__ == "__main__":
+    main()
