@@ -30,6 +30,49 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Every figure of the golden images, CHAPTER/FIGURE.
+std::vector<std::string> AllFigures(const fs::path& golden) {
+  std::vector<std::string> figures;
+  std::error_code error;
+  for (const auto& chapter : fs::directory_iterator(golden, error)) {
+    for (const auto& entry : fs::directory_iterator(chapter.path(), error)) {
+      if (entry.path().extension() == ".png") {
+        figures.push_back((chapter.path().filename() / entry.path().stem()).string());
+      }
+    }
+  }
+  std::sort(figures.begin(), figures.end());
+  return figures;
+}
+
+// What a figure name without its chapter (fig-2-11) was probably meant to be:
+// " (a figure is CHAPTER/FIGURE: did you mean 02-basic-rays/fig-2-11?)", or empty.
+std::string FigureSuggestion(const std::string& name, const fs::path& golden) {
+  std::vector<std::string> figures = AllFigures(golden);
+  std::vector<std::string> bare;
+  for (const std::string& figure : figures) {
+    bare.push_back(fs::path(figure).filename().string());
+  }
+  const std::string closest = cgfs::ClosestName(name, bare);
+  if (closest.empty()) {
+    return "";
+  }
+  const auto at = std::find(bare.begin(), bare.end(), closest);
+  return " (a figure is CHAPTER/FIGURE: did you mean " + figures[at - bare.begin()] + "?)";
+}
+
+// The figures of one chapter's golden images.
+std::vector<std::string> Stems(const fs::path& chapter) {
+  std::vector<std::string> stems;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(chapter, error)) {
+    if (entry.path().extension() == ".png") {
+      stems.push_back(entry.path().stem().string());
+    }
+  }
+  return stems;
+}
+
 std::string KnownFigures(const fs::path& golden, const fs::path& chapter) {
   std::string names;
   std::error_code error;
@@ -60,7 +103,9 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   const fs::path name(argument);
   const fs::path chapter = name.parent_path();
   if (name.has_extension() || chapter.empty() || chapter.has_parent_path()) {
-    throw cgfs::Error("cannot read '" + argument + "': no such file");
+    const bool bare = !name.has_extension() && chapter.empty();
+    throw cgfs::Error("cannot read '" + argument + "': no such file" +
+                      (bare ? FigureSuggestion(argument, golden) : ""));
   }
   std::error_code error;
   if (!fs::is_directory(golden, error)) {
@@ -73,9 +118,22 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   }
   const fs::path file = golden / chapter / (name.filename().string() + ".png");
   if (!SomethingAt(file)) {
-    throw cgfs::Error("unknown figure '" + argument + "'; known: " + KnownFigures(golden, chapter));
+    const std::string closest = cgfs::ClosestName(name.filename().string(), Stems(golden / chapter));
+    throw cgfs::Error("unknown figure '" + argument + "'" +
+                      (closest.empty() ? "" : " (did you mean " + (chapter / closest).string() + "?)") +
+                      "; known: " + KnownFigures(golden, chapter));
   }
   return file;
+}
+
+// A golden image as the repository names it (tests/golden/02-basic-rays/fig-2-11.png),
+// wherever the tool was run from; any other file as it was given.
+std::string Shown(const fs::path& file, const fs::path& golden) {
+  const fs::path ours(CGFS_GOLDEN_DIR);
+  if (golden == ours && file.parent_path().parent_path() == ours) {
+    return (fs::path("tests") / "golden" / file.parent_path().filename() / file.filename()).string();
+  }
+  return file.string();
 }
 
 // Whether `path` names something inside `folder`, however either is spelled (links,
@@ -235,7 +293,7 @@ int main(int argc, char** argv) {
     const cgfs::Comparison comparison = cgfs::CompareImages(expected, actual);
     cgfs::WriteImage(comparison.difference, difference_path);
 
-    std::cout << "expected: " << expected_file.string() << "\n"
+    std::cout << "expected: " << Shown(expected_file, golden) << "\n"
               << "actual:   " << actual_file.string() << "\n";
     if (IsJpeg(actual_file)) {
       std::cout << "note: ACTUAL is a JPEG, whose lossy compression changes pixels all over the\n"

@@ -110,9 +110,8 @@ std::size_t EditDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// The one of `names` that `name` was most likely meant to be: one that starts
-// with it or it starts with (fig-3-16 for fig-3-16-specular), else the closest
-// within three edits; empty when none is close.
+}  // namespace
+
 std::string ClosestName(const std::string& name, const std::vector<std::string>& names) {
   std::string best;
   std::size_t best_distance = 4;
@@ -126,6 +125,8 @@ std::string ClosestName(const std::string& name, const std::vector<std::string>&
   }
   return best;
 }
+
+namespace {
 
 std::vector<std::string> Stems(const std::vector<fs::path>& paths) {
   std::vector<std::string> stems;
@@ -159,6 +160,20 @@ std::string FileUrl(const fs::path& file) {
     }
   }
   return url;
+}
+
+// Where the chapter's figures and the sources' disagreements are explained: its web page,
+// the README drawn (linked where scripts/site has made it), and the README's place in
+// the repository (Markdown, which a browser shows as raw text: named, not linked).
+std::string ReadmeNote(const std::string& chapter) {
+  const fs::path site = fs::path(CGFS_SOURCE_DIR) / "out" / "site" / chapter / "index.html";
+  std::error_code error;
+  std::string note = "<p>The chapter's figures and where the sources disagree: ";
+  if (fs::is_regular_file(site, error)) {
+    note += "<a href=\"" + Escaped(FileUrl(site)) + "\">its web page</a>, or ";
+  }
+  return note + "its README, <code>chapters/" + Escaped(chapter) + "/README.md</code> in this repository" +
+         (fs::is_regular_file(site, error) ? "" : " (<code>scripts/site</code> makes it a web page)") + ".</p>";
 }
 
 // For a failed figure of a chapter whose book functions have cases
@@ -291,15 +306,12 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
        << "<p>Difference images: " << Escaped(kDifferenceLegend)
        << ". Click an image to see it at full size.</p>\n<table>\n";
   for (const ReportEntry& entry : entries) {
-    const fs::path readme = fs::path(CGFS_SOURCE_DIR) / "chapters" / entry.chapter / "README.md";
     page << "<tr class=\"" << VerdictName(entry.verdict) << "\"><td><h3>" << Escaped(entry.chapter)
          << "/" << Escaped(entry.figure) << ": " << VerdictName(entry.verdict) << "</h3>";
     if (!entry.diagnosis.empty()) {
       page << "<p class=\"diagnosis\">" << Escaped(entry.diagnosis) << "</p>";
     }
-    // The README is Markdown, which a browser shows as raw text: named, not linked.
-    page << "<pre>" << Escaped(entry.message) << "</pre><p>The chapter's figures and where "
-         << "the sources disagree: <code>" << Escaped(readme.generic_string()) << "</code></p>"
+    page << "<pre>" << Escaped(entry.message) << "</pre>" << ReadmeNote(entry.chapter)
          << FunctionCasesNote(entry) << "</td>" << ImageCell(entry.expected, "ours");
     if (entry.verdict != ReportEntry::Verdict::kMissing) {
       page << ImageCell(entry.actual, "yours") << ImageCell(entry.difference, "difference");

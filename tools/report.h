@@ -37,6 +37,11 @@ std::vector<ReportEntry> CompareFolder(const std::filesystem::path& folder,
 std::vector<std::string> UnmatchedNames(const std::filesystem::path& folder,
                                         const std::filesystem::path& golden);
 
+// The one of `names` that `name` was most likely meant to be: one that starts with it
+// or it starts with (fig-3-16 for fig-3-16-specular), else the closest within three
+// edits; empty when none is close.
+std::string ClosestName(const std::string& name, const std::vector<std::string>& names);
+
 // Writes the page (images embedded as data: URLs), replacing `html` only by a
 // complete new file. Throws cgfs::Error.
 void WriteReport(const std::vector<ReportEntry>& entries, const std::filesystem::path& html,

@@ -158,6 +158,12 @@ expect 1 "compare: a different figure" "$compare" 02-basic-rays/fig-2-11-with-gr
 [ -f "$figures/fig-2-11.diff.png" ] || { echo "FAIL: no difference image written"; failures=$((failures + 1)); }
 expect 2 "compare: unknown figure" "$compare" 02-basic-rays/fig-99 "$figures/fig-2-11.png"
 expect 2 "compare: unknown chapter" "$compare" 99-nothing/fig-1 "$figures/fig-2-11.png"
+expect 2 "compare: a figure without its chapter" "$compare" fig-2-11 "$figures/fig-2-11.png"
+grep -qF "(a figure is CHAPTER/FIGURE: did you mean 02-basic-rays/fig-2-11?)" "$work/stderr" ||
+  { echo "FAIL: a figure without its chapter is not told the name it needs"; failures=$((failures + 1)); }
+expect 2 "compare: a figure's name misspelt" "$compare" 02-basic-rays/fig-2-1 "$figures/fig-2-11.png"
+grep -qF "(did you mean 02-basic-rays/fig-2-11?)" "$work/stderr" ||
+  { echo "FAIL: a misspelt figure is not told the name it probably meant"; failures=$((failures + 1)); }
 expect 2 "compare: missing image" "$compare" 02-basic-rays/fig-2-11 "$work/missing.png"
 expect 2 "compare: wrong size" "$compare" 02-basic-rays/fig-2-11 "$work/small/fig-2-11.png"
 echo "not an image" >"$work/text.png"

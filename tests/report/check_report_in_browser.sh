@@ -35,6 +35,10 @@ want "03-light/fig-3-16.ppm: not one of our figures, not compared (did you mean 
 cases_links=$(grep -o '<p class="cases">Its functions one at a time, on the cases of <a href="file://[^"]*/tests/cases/0[23]-[a-z-]*\.json">' \
   "$work/mine/report.html" | wc -l)
 [ "$cases_links" -eq 2 ] || { echo "FAIL: $cases_links failed figures link their chapter's function cases, not 2"; failed=1; }
+# Each figure names its chapter's README by its place in the repository, not by a path of
+# this machine's.
+readmes=$(grep -o '<code>chapters/0[23]-[a-z-]*/README.md</code> in this repository' "$work/mine/report.html" | wc -l)
+[ "$readmes" -eq 4 ] || { echo "FAIL: $readmes figures name their chapter's README, not 4"; failed=1; }
 
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then
