@@ -3,8 +3,8 @@
 # Input 1: ctest's Testing/Temporary/LastTest.log (for "not written yet: Name").
 # Input 2: ctest's console lines "N/M Test #K: NAME .... Status", sorted by K.
 # A test belongs to the function its name starts with ("TraceRay keeps ...",
-# "IntersectRaySphere: ..."; not "Listing 6-1 ..."), else to "golden images",
-# "pinned pixels" or "other tests".
+# "IntersectRaySphere: ..."; not "Listing 6-1 ..."), else to "golden images" or
+# "pinned pixels"; any other test is a line of its own, under its name.
 
 # For a failed test, the reason to print under it: the image diagnosis ("your image
 # is ours moved one row down") or else its numbers, and its first wrong pixel; else the
@@ -103,7 +103,7 @@ match($0, /Test +#[0-9]+: /) {
   } else if (test_name ~ /^pinned pixels/) {
     group = "pinned pixels"
   } else {
-    group = "other tests"
+    group = test_name
   }
   key = chapter SUBSEP group
   if (!(key in seen_group)) {

@@ -118,10 +118,12 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
   }
   const fs::path file = golden / chapter / (name.filename().string() + ".png");
   if (!SomethingAt(file)) {
-    const std::string closest = cgfs::ClosestName(name.filename().string(), Stems(golden / chapter));
-    throw cgfs::Error("unknown figure '" + argument + "'" +
-                      (closest.empty() ? "" : " (did you mean " + (chapter / closest).string() + "?)") +
-                      "; known: " + KnownFigures(golden, chapter));
+    const std::string closest =
+        cgfs::ClosestName(name.filename().string(), Stems(golden / chapter));
+    throw cgfs::Error(
+        "unknown figure '" + argument + "'" +
+        (closest.empty() ? "" : " (did you mean " + (chapter / closest).string() + "?)") +
+        "; known: " + KnownFigures(golden, chapter));
   }
   return file;
 }
@@ -131,7 +133,8 @@ fs::path ResolveExpected(const std::string& argument, const fs::path& golden) {
 std::string Shown(const fs::path& file, const fs::path& golden) {
   const fs::path ours(CGFS_GOLDEN_DIR);
   if (golden == ours && file.parent_path().parent_path() == ours) {
-    return (fs::path("tests") / "golden" / file.parent_path().filename() / file.filename()).string();
+    return (fs::path("tests") / "golden" / file.parent_path().filename() / file.filename())
+        .string();
   }
   return file.string();
 }

@@ -172,8 +172,11 @@ std::string ReadmeNote(const std::string& chapter) {
   if (fs::is_regular_file(site, error)) {
     note += "<a href=\"" + Escaped(FileUrl(site)) + "\">its web page</a>, or ";
   }
-  return note + "its README, <code>chapters/" + Escaped(chapter) + "/README.md</code> in this repository" +
-         (fs::is_regular_file(site, error) ? "" : " (<code>scripts/site</code> makes it a web page)") + ".</p>";
+  return note + "its README, <code>chapters/" + Escaped(chapter) +
+         "/README.md</code> in this repository" +
+         (fs::is_regular_file(site, error) ? ""
+                                           : " (<code>scripts/site</code> makes it a web page)") +
+         ".</p>";
 }
 
 // For a failed figure of a chapter whose book functions have cases

@@ -201,16 +201,18 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
 }
 
 // The overdraw of a figure: how many times RenderScene with `method` writes each
-// pixel (Canvas::CountWrites), drawn through the cost ramp from 0 to `scale_max`
-// (program/cost_view.h); the cost view of the figure named `figure`.
+// pixel (the canvas's PutPixel calls, cgfs/tally.h), drawn through the cost ramp from 0
+// to `scale_max` (program/cost_view.h); the cost view of the figure named `figure`.
 cgfs::Figure OverdrawFigure(const std::string& figure, const std::string& caption,
                             std::function<Scene()> scene, const HiddenSurfaceRemoval& method,
                             long scale_max) {
   const auto draw = [method, scale_max](const Scene& drawn, Canvas& canvas) {
-    std::vector<long> writes(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
-    canvas.CountWrites(&writes);
-    RenderScene(drawn, canvas, method);
-    canvas.CountWrites(nullptr);
+    std::vector<long> writes;
+    {
+      const cgfs::Tallying tallying(cgfs::kPixelsPut, canvas.Width(), canvas.Height());
+      RenderScene(drawn, canvas, method);
+      writes = tallying.PerPixel();
+    }
     cgfs::DrawCost(canvas, writes, scale_max);
   };
   return {figure + "-overdraw", caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },

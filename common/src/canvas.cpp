@@ -23,13 +23,6 @@ int CheckedSize(int size, const char* what) {
 Canvas::Canvas(int width, int height, Color background)
     : image_(CheckedSize(width, "width"), CheckedSize(height, "height"), ToRgb8(background)) {}
 
-void Canvas::CountWrites(std::vector<long>* counts) {
-  if (counts != nullptr && counts->size() != static_cast<std::size_t>(Width()) * Height()) {
-    throw std::invalid_argument("CountWrites: one count per pixel is needed");
-  }
-  write_counts_ = counts;
-}
-
 Rgb8 Canvas::GetPixel(int x, int y) const {
   const auto screen = ToScreen(x, y);
   if (!screen) {

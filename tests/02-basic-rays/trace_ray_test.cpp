@@ -5,8 +5,7 @@
 #include "cases.h"
 #include "printing.h"
 #include "raytracer.h"
-
-using cgfs::test::IsSameImageAs;
+#include "render_loops.h"
 
 namespace {
 
@@ -36,12 +35,9 @@ TEST_CASE("TraceRay: the cases of 02-basic-rays.json", "[equations]") {
   }
 }
 
-TEST_CASE("RenderScene paints every pixel of the canvas", "[equations]") {
-  // A non-square canvas: x and y each run over their own side. (A loop that also
-  // visits a row past the canvas cannot be seen: PutPixel drops what falls off it.)
+TEST_CASE("RenderScene paints every pixel of the canvas, one ray each, Cw x Ch rays",
+          "[equations]") {
   Scene empty;
   empty.background_color = cgfs::kBlack;
-  Canvas canvas(40, 30, cgfs::kWhite);
-  RenderScene(empty, canvas);
-  CHECK_THAT(canvas.GetImage(), IsSameImageAs(cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0})));
+  cgfs::test::CheckPaintsEveryPixelOnce([&](Canvas& canvas) { RenderScene(empty, canvas); });
 }

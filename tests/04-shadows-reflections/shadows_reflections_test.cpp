@@ -8,9 +8,8 @@
 #include "../03-light/light_of_case.h"
 #include "cases.h"
 #include "printing.h"
+#include "render_loops.h"
 #include "scenes.h"
-
-using cgfs::test::IsSameImageAs;
 
 namespace {
 
@@ -90,12 +89,10 @@ TEST_CASE("TraceRay: the cases of 04-shadows-reflections.json", "[equations]") {
   }
 }
 
-TEST_CASE("RenderScene paints every pixel of the canvas", "[equations]") {
-  // A non-square canvas: x and y each run over their own side. (A loop that also
-  // visits a row past the canvas cannot be seen: PutPixel drops what falls off it.)
+TEST_CASE("RenderScene paints every pixel of the canvas, one ray each, Cw x Ch rays",
+          "[equations]") {
   Scene empty;
   empty.background_color = cgfs::kBlack;
-  Canvas canvas(40, 30, cgfs::kWhite);
-  RenderScene(empty, kDefaultRecursionDepth, canvas);
-  CHECK_THAT(canvas.GetImage(), IsSameImageAs(cgfs::Image(40, 30, cgfs::Rgb8{0, 0, 0})));
+  cgfs::test::CheckPaintsEveryPixelOnce(
+      [&](Canvas& canvas) { RenderScene(empty, kDefaultRecursionDepth, canvas); });
 }

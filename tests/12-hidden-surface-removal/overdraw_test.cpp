@@ -1,5 +1,5 @@
 // The overdraw views: how many times each way of hiding surfaces writes each pixel,
-// counted by the canvas (Canvas::CountWrites), against the scene's geometry and the
+// counted by the canvas (its PutPixel calls, cgfs/tally.h), against the scene's geometry and the
 // figures themselves.
 #include <catch2/catch.hpp>
 
@@ -28,10 +28,9 @@ constexpr long kScale = 5;  // the overdraw views' shared top of the scale
 // The writes RenderScene makes to each pixel of a 600x600 canvas, row by row from the top.
 std::vector<long> Writes(const HiddenSurfaceRemoval& method) {
   Canvas canvas(600, 600);
-  std::vector<long> writes(600 * 600, 0);
-  canvas.CountWrites(&writes);
+  const cgfs::Tallying tallying(cgfs::kPixelsPut, 600, 600);
   RenderScene(SceneTransformedCubes(), canvas, method);
-  return writes;
+  return tallying.PerPixel();
 }
 
 // How many of the scene's triangles, front or back, the ray through each pixel crosses

@@ -72,18 +72,22 @@ TEST_CASE("GetPixel refuses a pixel off the canvas", "[canvas]") {
   CHECK_THROWS_AS(canvas.GetPixel(2, 0), std::out_of_range);
 }
 
-TEST_CASE("CountWrites counts each PutPixel on the canvas at its pixel, until it is stopped",
+TEST_CASE("The canvas counts every PutPixel, at its pixel or off the canvas, while a Tallying lives",
           "[canvas]") {
   Canvas canvas(4, 2);
-  std::vector<long> counts(8, 0);
-  canvas.CountWrites(&counts);
-  canvas.PutPixel(-2, 0, cgfs::kRed);  // column 0, row 0
-  canvas.PutPixel(-2, 0, cgfs::kBlue);
-  canvas.PutPixel(1, -1, cgfs::kRed);  // column 3, row 1
-  canvas.PutPixel(2, 0, cgfs::kRed);   // off the canvas: not counted
-  canvas.CountWrites(nullptr);
-  canvas.PutPixel(-2, 0, cgfs::kRed);
+  canvas.PutPixel(-2, 0, cgfs::kRed);  // before: not counted
+  std::vector<long> counts;
+  long total = 0;
+  {
+    const cgfs::Tallying tallying(cgfs::kPixelsPut, 4, 2);
+    canvas.PutPixel(-2, 0, cgfs::kRed);  // column 0, row 0
+    canvas.PutPixel(-2, 0, cgfs::kBlue);
+    canvas.PutPixel(1, -1, cgfs::kRed);  // column 3, row 1
+    canvas.PutPixel(2, 0, cgfs::kRed);   // off the canvas: in the total only
+    counts = tallying.PerPixel();
+    total = tallying.Total();
+  }
+  canvas.PutPixel(-2, 0, cgfs::kRed);  // after: not counted
   CHECK(counts == std::vector<long>{2, 0, 0, 0, 0, 0, 0, 1});
-  std::vector<long> too_few(7, 0);
-  CHECK_THROWS_AS(canvas.CountWrites(&too_few), std::invalid_argument);
+  CHECK(total == 4);
 }

@@ -7,14 +7,17 @@
 // Sizes are even so that the centre sits between four pixels, as in the book.
 #pragma once
 
-#include <cstddef>
 #include <optional>
-#include <vector>
 
 #include "cgfs/color.h"
 #include "cgfs/image.h"
+#include "cgfs/tally.h"
 
 namespace cgfs {
+
+// Every PutPixel, on the canvas or off it (the views of where the work goes, and the
+// test that a render loop visits each pixel once: cgfs/tally.h).
+inline constexpr Counter kPixelsPut{"PutPixel calls"};
 
 // A position in the image in memory order (column from the left, row from the top).
 struct ScreenPoint {
@@ -45,20 +48,12 @@ class Canvas {
   // The book's only drawing primitive: clamps and rounds the colour, and
   // silently ignores pixels outside the canvas.
   void PutPixel(int x, int y, const Color& color) {
+    TallyAt(kPixelsPut, x, y);
     if (const std::optional<ScreenPoint> screen = ToScreen(x, y)) {
       image_.Set(screen->column, screen->row,
                  {ToChannel(color.r), ToChannel(color.g), ToChannel(color.b)});
-      if (write_counts_ != nullptr) {
-        ++(*write_counts_)[static_cast<std::size_t>(screen->row) * Width() + screen->column];
-      }
     }
   }
-
-  // How often each pixel is drawn over (the rasterizer's overdraw): from here on every
-  // PutPixel that lands on the canvas adds one to its pixel's entry of `counts`, row by
-  // row from the top (Width() x Height() entries, or std::invalid_argument), until
-  // CountWrites(nullptr). A copy of the canvas counts into the same vector.
-  void CountWrites(std::vector<long>* counts);
 
   // What PutPixel stored at (x, y), in canvas coordinates. (x, y) must be on the canvas.
   Rgb8 GetPixel(int x, int y) const;
@@ -67,7 +62,6 @@ class Canvas {
 
  private:
   Image image_;
-  std::vector<long>* write_counts_ = nullptr;
 };
 
 }  // namespace cgfs

@@ -1,0 +1,82 @@
+// Counting work beside the book's code, for the views of where the work goes: one line
+// at the event, Tally(kCounter) or TallyAt(kCounter, x, y), and nothing in any of the
+// book's signatures, structures or scenes (pbrt-v4's per-pixel statistics are the
+// model). A counter is declared once, at the top of the file whose code counts it:
+//
+//   inline constexpr cgfs::Counter kTracedRays{"rays traced"};
+//
+// Counting is off unless a Tallying is alive; then each event costs one test of a flag.
+// A Tallying counts one counter over a canvas's pixels, for one render: an event at a
+// canvas point adds one to that pixel's count, an event with no pixel (or off the
+// canvas) to the total only. Tally(counter) counts at the pixel the thread draws, as the
+// render loop sets it (CurrentPixel). Each pixel is drawn by one thread, so each count is
+// added to by one thread only: threads need no lock.
+#pragma once
+
+#include <atomic>
+#include <vector>
+
+namespace cgfs {
+
+struct Counter {
+  const char* name;  // what it counts, in words ("rays traced")
+};
+
+class Tallying;
+
+namespace tally_internal {
+extern std::atomic<Tallying*> active;  // the one counting, if any
+void Add(const Counter& counter, int x, int y);
+void AddAtCurrentPixel(const Counter& counter);
+}  // namespace tally_internal
+
+// One event at canvas point (x, y).
+inline void TallyAt(const Counter& counter, int x, int y) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+    tally_internal::Add(counter, x, y);
+  }
+}
+
+// One event at the pixel this thread is drawing.
+inline void Tally(const Counter& counter) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+    tally_internal::AddAtCurrentPixel(counter);
+  }
+}
+
+// The pixel this thread draws from here on, for Tally (a render loop sets it for each
+// pixel; an event outside any CurrentPixel counts at no pixel).
+class CurrentPixel {
+ public:
+  CurrentPixel(int x, int y);
+  ~CurrentPixel();
+  CurrentPixel(const CurrentPixel&) = delete;
+  CurrentPixel& operator=(const CurrentPixel&) = delete;
+};
+
+// Counts `counter` over a width x height canvas while it lives; one at a time (a second
+// throws std::logic_error).
+class Tallying {
+ public:
+  Tallying(const Counter& counter, int width, int height);
+  ~Tallying();
+  Tallying(const Tallying&) = delete;
+  Tallying& operator=(const Tallying&) = delete;
+
+  // Each pixel's count, row by row from the top, as the canvas's image keeps its pixels.
+  const std::vector<long>& PerPixel() const { return counts_; }
+  // Every event, on the canvas or not.
+  long Total() const;
+
+ private:
+  friend void tally_internal::Add(const Counter&, int, int);
+  friend void tally_internal::AddAtCurrentPixel(const Counter&);
+  void Add(int x, int y);
+
+  const Counter* counter_;
+  int width_, height_;
+  std::vector<long> counts_;
+  std::atomic<long> elsewhere_{0};  // events off the canvas or at no pixel
+};
+
+}  // namespace cgfs
