@@ -249,6 +249,56 @@ EOF
 run 03 "$work/lights.js"
 check "light.position || light.direction tells them apart: every ComputeLighting case passes" says "^  ComputeLighting +passed \(7 cases\)"
 
+echo "== a chapter's own types, a page's script saved as .js, an ES module, a file written at load"
+styles=$work/styles
+mkdir -p "$styles"
+cat >"$styles/vectors.js" <<'EOF'
+// A browser script with a vector class of its own.
+const canvas = document.getElementById("canvas");
+class Vec3D {
+  constructor(x, y, z) { Object.assign(this, { x, y, z }); }
+  dot(v) { return this.x * v.x + this.y * v.y + this.z * v.z; }
+  sub(v) { return new Vec3D(this.x - v.x, this.y - v.y, this.z - v.z); }
+}
+function IntersectRaySphere(O, D, sphere) {
+  const CO = O.sub(sphere.center), a = D.dot(D), b = 2 * CO.dot(D), c = CO.dot(CO) - sphere.radius ** 2;
+  const disc = b * b - 4 * a * c;
+  if (disc < 0) return [Infinity, Infinity];
+  return [(-b + Math.sqrt(disc)) / (2 * a), (-b - Math.sqrt(disc)) / (2 * a)];
+}
+EOF
+run 02 "$styles/vectors.js"
+check "a script that reaches for document loads (the page's stand-in)" test $status -eq 1
+check "a method the checker's vectors lack is said once, first, naming the call" \
+  says "^    IntersectRaySphere calls \`O.sub\`, which what the checker gives it does not have"
+check "and the cases are its consequences" \
+  says "^    case 1 of 02-basic-rays.json \(a consequence of the line above\): threw TypeError: O.sub is not a function"
+node "$checker" --adapter-template 02 "$styles/vectors.js" >"$styles/vectors-adapter.js"
+check "--adapter-template makes the vectors with its Vec3D" grep -qF "vector: ([a, b, c]) => new Vec3D(a, b, c)" "$styles/vectors-adapter.js"
+run 02 "$styles/vectors.js" --adapter "$styles/vectors-adapter.js"
+check "with it, IntersectRaySphere passes" says "^  IntersectRaySphere +passed \(5 cases\)"
+printf 'const canvasWidth = 600, canvasHeight = 600, size = 1, distance = 1;\nexport function CanvasToViewport(x, y) {\n  return [x * size / canvasWidth, y * size / canvasHeight, distance];\n}\n' >"$styles/module.mjs"
+run 02 "$styles/module.mjs"
+check "an ES module's own names are named, and that only a function it exports can set them" \
+  says "reads your \`canvasHeight\`, \`canvasWidth\`, \`distance\` and \`size\`.*through a function your ES module exports"
+printf 'require("fs").writeFileSync("out.ppm", "P3");\nfunction CanvasToViewport(x, y) { return [0, 0, 1]; }\n' >"$styles/writes.js"
+run 02 "$styles/writes.js"
+check "a script that writes a file as it loads is told where that belongs, in one line" one_line
+check "(that line)" says "it writes a file as it loads, which it may not here; keep that under if \(require.main === module\)"
+if [ $have_python -eq 1 ]; then
+  printf 'class V:\n    def __init__(self, x, y, z):\n        self.x, self.y, self.z = x, y, z\n\n    def sub(self, o):\n        return V(self.x - o.x, self.y - o.y, self.z - o.z)\n\n\ndef IntersectRaySphere(O, D, sphere):\n    CO = O.sub(sphere.center)\n    return (0, 0)\n' >"$styles/own_vector.py"
+  run 02 "$styles/own_vector.py"
+  check "Python: a method the checker's values lack is said first" \
+    says "^    IntersectRaySphere calls \`.sub\`, which what the checker gives it does not have"
+  node "$checker" --adapter-template 02 "$styles/own_vector.py" >"$styles/own_vector_adapter.py"
+  check "Python: --adapter-template imports its V" grep -qx "from own_vector import V" "$styles/own_vector_adapter.py"
+  check "Python: and makes vectors with it" grep -qx "    return V(\*value)" "$styles/own_vector_adapter.py"
+  printf 'open("out.ppm", "w").write("P3")\n\n\ndef CanvasToViewport(x, y):\n    return (0, 0, 1)\n' >"$styles/writes.py"
+  run 02 "$styles/writes.py"
+  check "Python: a module that writes a file as it loads is told where that belongs" \
+    says 'keep that under if __name__ == "__main__":'
+fi
+
 echo "== docs/students.md: its commands as written, on its layout"
 export HOME=$work/home
 mkdir -p ~/my-cgfs/02-basic-rays ~/my-cgfs-js/02-basic-rays

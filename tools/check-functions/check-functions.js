@@ -268,7 +268,7 @@ async function main(argv) {
       const { functionsOf } = await import("./core/plan.mjs");
       const { NAMES } = await import("./core/names.mjs");
       const facts = await runner.load(functionsOf(sections(chapter, files)), NAMES);
-      process.stdout.write(adapterTemplate(options.language, facts));
+      process.stdout.write(adapterTemplate(options.language, facts, path.basename(options.module)));
       return 0;
     }
     const { lines, failed } = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter) });

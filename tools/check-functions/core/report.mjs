@@ -72,8 +72,11 @@ function readsNote(name, fact, facts, missing, { adapterGiven, language, chapter
   const theirs = `the checker sets ${code(book)} (the book's names)${demos.length ? ` and ${code(demos)} (the demos')` : ""}`;
   if (own.length > 0) {
     const reach = new Set(missing).size > 1 ? "reach" : "reaches";
+    const how = facts.reachable === "exports"
+      ? "give an adapter that sets yours through a function your ES module exports (its own names are out of reach otherwise)"
+      : `give an adapter that sets yours (${template})`;
     return `${name} reads ${where} ${code(own)}, so ${parts} that each case gives never ${reach} it: ${theirs}; ` +
-      `use those names, or give an adapter that sets yours (${template})`;
+      `use those names, or ${how}`;
   }
   return `${name} reads none of the names through which ${parts} reach it (${theirs}), nor names of its own: ` +
     `they are fixed in it, and each case gives its own`;
@@ -103,6 +106,30 @@ function demosNote(fact, facts, kase) {
   const demoStyle = (fact.reads ?? []).some(([name]) => NAMES[name]?.dialect === "demos") ||
     facts.defined.some((name) => NAMES[name]?.dialect === "demos");
   return demoStyle && kase.demos ? { line: `this is where the demos and the book differ: ${kase.demos}` } : {};
+}
+
+// An error that says the function expected types of its own: a method the checker's
+// values lack. The name it was called on, or null.
+function typeMismatch(answer, signature, language) {
+  const raised = typeof answer.raised === "string" ? answer.raised : "";
+  if (language === "python") {
+    const found = /^AttributeError: '(Vector|Point|Record|tuple|list|dict|Texture|ndarray)' object has no attribute '(\w+)'/.exec(raised);
+    return found ? `.${found[2]}` : null;
+  }
+  const found = /^TypeError: ([A-Za-z_$][\w$]*)((?:\.[\w$]+)+) is not a function/.exec(raised);
+  return found && signature.parameters.some(([name]) => name === found[1]) ? `${found[1]}${found[2]}` : null;
+}
+
+// The line that says the checker's values are not the function's own types.
+function typeNote(name, called, { language, chapter, file }) {
+  const shapes = language === "python"
+    ? "vectors as named tuples (x, y, z), colours as tuples, spheres, lights and scenes as records of the book's fields " +
+      "(numpy arrays where your module uses numpy, your Sphere where it has one)"
+    : "vectors as arrays [x, y, z] (or your Vec, Vec3, Vector, Vector3 or Vertex, made with (x, y, z)), colours as " +
+      "arrays (or your Color), spheres, lights and scenes as objects with the book's fields (or your Sphere)";
+  return `${name} calls \`${called}\`, which what the checker gives it does not have: it gives ${shapes}. Give an ` +
+    `adapter whose vector(value), color(value) or sphere(value) makes your own types (\`--adapter-template ${chapter.slice(0, 2)} ${file}\` ` +
+    "prints one to fill in)";
 }
 
 function inputsOf(kase) {
@@ -148,9 +175,13 @@ async function checkFunction(entry, fact, context) {
   const notes = boundNote(entry.function, fact);
   const missing = failures.flatMap(({ kase, answer }) => unreached(fact, facts, entry, kase, answer, options.adapterGiven));
   if (notes.length === 0 && missing.length > 0) notes.push(readsNote(entry.function, fact, facts, missing, { ...options, file }));
+  const mismatched = failures.map(({ answer }) => typeMismatch(answer, signature, options.language)).find(Boolean);
+  if (mismatched) notes.push(typeNote(entry.function, mismatched, { ...options, file }));
   lines.push(...notes.map((note) => `    ${note}`));
   for (const { kase, number, problem, answer } of failures) {
-    if (notes.length > 0 && (fact.bound?.length || unreached(fact, facts, entry, kase, answer, options.adapterGiven).length)) {
+    const consequence = fact.bound?.length || unreached(fact, facts, entry, kase, answer, options.adapterGiven).length ||
+      (mismatched && typeMismatch(answer, signature, options.language));
+    if (notes.length > 0 && consequence) {
       lines.push(`    case ${number} of ${caseFile} (a consequence of the line above): ${problem.join("; ")}`);
       continue;
     }

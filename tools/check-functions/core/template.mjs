@@ -99,20 +99,41 @@ function assignments(facts, language) {
   return lines;
 }
 
-const GIVEN = `given.canvas    { width, height, and for drawing functions PutPixel(x, y, color) }
-  given.viewport  { width, height, d }
-  given.scene     { spheres: [...], lights: [...], background_color: [r, g, b] }
-  given.camera    { position, rotation } (chapter 5), given.depth_buffer (chapter 12)`;
+const GIVEN = [
+  "given.canvas    { width, height, and for drawing functions PutPixel(x, y, color) }",
+  "given.viewport  { width, height, d }",
+  "given.scene     { spheres: [...], lights: [...], background_color: [r, g, b] }",
+  "given.camera    { position, rotation } (chapter 5), given.depth_buffer (chapter 12)",
+];
 
-function pythonTemplate(filled) {
+// Builders of the chapter's own types: a class of three parameters named like a vector
+// or a colour (Vec3(x, y, z), Color(r, g, b)) becomes the adapter's vector or color.
+function typeLines(facts, language) {
+  const python = language === "python";
+  const lines = [];
+  const used = [];
+  for (const [name, params] of Object.entries(facts?.classes ?? {})) {
+    if (params.length !== 3) continue;
+    const named = params.join(",");
+    const kind = /col/i.test(name) || named === "r,g,b" ? "color"
+      : /vec|vert|point|v3/i.test(name) || named === "x,y,z" ? "vector" : null;
+    if (!kind || lines.some((line) => line.includes(`${kind}(`) || line.includes(`${kind}:`))) continue;
+    lines.push(python ? `def ${kind}(value):  # your ${name}\n    return ${name}(*value)\n`
+      : `  ${kind}: ([a, b, c]) => new ${name}(a, b, c),  // your ${name}`);
+    used.push(name);
+  }
+  return { lines, used };
+}
+
+function pythonTemplate(filled, types = [], imports = "") {
   return `# An adapter for check-functions.js (docs/students.md, "How the book's data reach your
 # code"): give it with --adapter. Define only what your module needs; each function here
 # takes the place of the checker's own of the same name.
-
+${imports}
 
 def setup(module, given, adapter):
     """Called before each case with what the case gives (as dicts and lists):
-  ${GIVEN.replace(/given\.(\w+)/g, 'given["$1"]')}
+${GIVEN.map((line) => `      ${line.replace(/given\.(\w+)/g, 'given["$1"]')}`).join("\n")}
     The checker has set the book's names already (Cw, Ch, Vw, Vh, d, scene,
     BACKGROUND_COLOR, PutPixel...), and the demos' (spheres, lights, viewport_size...)
     where your module reads them: set the names of your own here. adapter builds the
@@ -126,24 +147,28 @@ ${filled ?? `    # For example, a canvas of your own:
     pass`}
 
 
-# Your own types, if your functions take them (each gets the case's JSON value):
+${types.length ? `# Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n\n")}`
+    : `# Your own types, if your functions take them (each gets the case's JSON value):
 # def vector(value):
 #     return MyVector(*value)
 # def sphere(value):
 #     return MySphere(center=value["center"], radius=value["radius"], color=value["color"])
-`;
+`}`;
 }
 
-function jsTemplate(filled) {
+function jsTemplate(filled, types = [], esm = null) {
   return `// An adapter for check-functions.js (docs/students.md, "How the book's data reach your
 // code"): give it with --adapter. Export only what your chapter needs; each function here
-// takes the place of the checker's own of the same name.
+// takes the place of the checker's own of the same name.${esm ? `
+// Your chapter is an ES module: save this as an .mjs file beside it.
+${esm}
+export default {` : `
 "use strict";
 
-module.exports = {
+module.exports = {`}
   // Called before each case, with your chapter as \`module\` (its exports, or for a plain
   // script its top-level names: module.Cw = 600 sets its Cw) and what the case gives:
-  //   ${GIVEN.replace(/\n/g, "\n  //   ")}
+${GIVEN.map((line) => `  //   ${line}`).join("\n")}
   // The checker has set the book's names already (Cw, Ch, Vw, Vh, d, scene, PutPixel...),
   // and the demos' (canvas.width, viewport_size, spheres, lights...) where your chapter
   // reads them: set the names of your own here. \`adapter\` builds the book's objects
@@ -155,21 +180,33 @@ ${filled ?? `    // For example, a canvas of your own:
     //   module.canvasHeight = given.canvas.height;
     // }`}
   },
-  // Your own types, if your functions take them (each gets the case's JSON value):
-  // vector: ([x, y, z]) => new Vec3(x, y, z),
+${types.length ? `  // Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n")}`
+    : `  // Your own types, if your functions take them (each gets the case's JSON value):
+  // vector: ([x, y, z]) => new Vec3(x, y, z),`}
 };
 `;
 }
 
-// The template, filled in when the facts of a chapter file are given.
-export function adapterTemplate(language, facts = null) {
+// The template, filled in when the facts of a chapter file (named `file`) are given.
+export function adapterTemplate(language, facts = null, file = "") {
   const python = language === "python";
   let filled = null;
   if (facts) {
-    const lines = assignments(facts, language);
+    let lines = assignments(facts, language);
+    if (!python && facts.reachable === "exports" && lines.length) {
+      // An ES module's own names cannot be set from outside: through a function it exports.
+      lines = ["    // Your ES module's own names are out of reach from here: export a function that sets",
+        "    // them (declared with let), and call it here, chapter.configure(given) say. What each gets:",
+        ...lines.filter((line) => /module\./.test(line)).map((line) => `    //   ${line.trim().replace(/^module\./, "")}`)];
+    }
     filled = (lines.length ? lines : [`    ${python ? "#" : "//"} your functions read no names of their own: the checker's defaults reach them`])
       .join("\n");
     if (python && lines.every((line) => /^\s*#/.test(line))) filled += "\n    pass";
   }
-  return python ? pythonTemplate(filled) : jsTemplate(filled);
+  const { lines: types, used } = typeLines(facts, language);
+  const stem = file.replace(/^.*\//, "").replace(/\.[^.]*$/, "");
+  if (python) return pythonTemplate(filled, types, used.length ? `\nfrom ${stem} import ${used.join(", ")}\n` : "");
+  const esm = facts?.reachable === "exports"
+    ? `import ${used.length ? `{ ${used.join(", ")} } ` : "* as chapter "}from "./${file.replace(/^.*\//, "")}";` : null;
+  return jsTemplate(filled, types, esm);
 }

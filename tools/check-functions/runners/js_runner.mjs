@@ -139,6 +139,8 @@ class Chapter {
       this.exports = loaded.default && typeof loaded.default === "object" ? { ...loaded.default, ...loaded } : loaded;
       return;
     }
+    // A script written for a page (it reaches for document) gets the page's stand-in.
+    if (/\bdocument\s*\.|\bwindow\s*\./.test(source)) installPage("");
     this.runScript({ code: source, line: 0, filename: this.file, program });
   }
 
@@ -259,7 +261,8 @@ function readsOf(chapter, source, names, wanted) {
         if (!/\[native code\]/.test(value.toString())) complete = false;
         continue;
       }
-      reads.set(name, value === undefined ? "missing" : "data");
+      // A name the chapter declares is its own data, reachable or not (an ES module's).
+      reads.set(name, value === undefined && declared?.kind !== "data" ? "missing" : "data");
     }
   }
   return { reads: [...reads].sort().map(([name, kind]) => [name, "", kind]), complete, calls: [...calls].sort() };
@@ -285,8 +288,20 @@ function factsOf(chapter, wanted, names) {
   for (const [name, each] of chapter.declared) {
     if (each.kind === "data") data[name] = describe(chapter.value(name));
   }
+  // The chapter's own types, with what their constructors take (for an adapter's
+  // vector(value) and color(value)).
+  const classes = {};
+  for (const [name, each] of chapter.declared) {
+    const value = chapter.value(name);
+    if ((each.kind === "class" || (each.kind === "function" && /^[A-Z]/.test(name))) && typeof value === "function") {
+      const source = value.toString();
+      const constructor = /^class\b/.test(source) ? /constructor\s*\(([^)]*)\)/.exec(source)?.[1] ?? ""
+        : /^function\s*\w*\s*\(([^)]*)\)/.exec(source)?.[1] ?? "";
+      classes[name] = constructor.split(",").map((p) => p.trim().split(/[\s=]/)[0]).filter(Boolean);
+    }
+  }
   return { functions, data, defined: [...chapter.declared.keys(), ...Object.keys(chapter.exports)],
-    reachable: chapter.kind === "script" ? "all" : "exports" };
+    reachable: chapter.kind === "script" ? "all" : "exports", classes };
 }
 
 // ---- Building a case's data -----------------------------------------------------------
@@ -327,10 +342,11 @@ function helpers(chapter) {
   const rgb = (c, [r, g, b]) => (c.r === r && c.g === g && c.b === b) || (c[0] === r && c[1] === g && c[2] === b);
   const light = chapter.value("Light");
   return {
-    vector: made(["Vec", "Vec3", "Vector", "Vertex"], xyz),
+    vector: made(["Vec", "Vec3", "Vector", "Vector3", "Vertex"], xyz),
     color: made(["Color"], rgb),
     point: made(["Pt", "Point"], (p, [x, y]) => p.x === x && p.y === y),
     matrix: made(["Mat4x4"], (m, [rows]) => Array.isArray(m.data) && m.data[0]?.[0] === rows[0][0]),
+    sphere: made(["Sphere"], (s, [center, radius]) => s.center === center && s.radius === radius),
     lightTypes: light && "AMBIENT" in light ? { field: "ltype", value: (type) => light[type.toUpperCase()], vector: "position" }
       : chapter.value("LT_AMBIENT") !== undefined
         ? { field: "type", value: (type) => chapter.value(`LT_${type.toUpperCase()}`), vector: "vector" } : null,
@@ -363,9 +379,14 @@ function defaultAdapter(made) {
     },
     transform: (value, adapter) => ({ scale: number(value.scale), rotation: adapter.matrix(value.rotation, adapter),
       translation: adapter.vector(value.translation, adapter) }),
-    sphere: (value, adapter) => ({ center: adapter.vector(value.center, adapter), radius: number(value.radius),
-      color: adapter.color(value.color, adapter), specular: number(value.specular ?? -1),
-      reflective: number(value.reflective ?? 0) }),
+    // A sphere: the chapter's own Sphere(center, radius, color, specular, reflective),
+    // the demos' order, where it has one that keeps them; else a plain object.
+    sphere(value, adapter) {
+      const fields = [adapter.vector(value.center, adapter), number(value.radius), adapter.color(value.color, adapter),
+        number(value.specular ?? -1), number(value.reflective ?? 0)];
+      return made.sphere(...fields) ?? { center: fields[0], radius: fields[1], color: fields[2],
+        specular: fields[3], reflective: fields[4] };
+    },
     // A light with its type's fields only (an ambient light has no position or direction),
     // or as the demos make it: Light.POINT in ltype and the direction in position.
     light(value, adapter) {
@@ -542,7 +563,9 @@ async function main() {
     try {
       await chapter.load();
     } catch (error) {
-      throw error instanceof LoadError ? error : new LoadError(oneLine(error));
+      const writes = ["EROFS", "EACCES", "EPERM"].includes(error?.code)
+        ? ": it writes a file as it loads, which it may not here; keep that under if (require.main === module)" : "";
+      throw error instanceof LoadError ? error : new LoadError(oneLine(error) + writes);
     }
     const own = load.adapter ? await loadAdapter(load.adapter, chapter).catch((error) => {
       throw new LoadError(`your adapter ${load.adapter} does not load: ${oneLine(error)}`);

@@ -18,6 +18,7 @@ import ast
 import builtins
 import collections
 import dis
+import errno
 import importlib.util
 import inspect
 import json
@@ -256,7 +257,10 @@ def load(path, name):
     try:
         spec.loader.exec_module(module)
     except BaseException as error:  # whatever their file does, one line
-        raise LoadError(f"{name} {path} does not load: {one_line(error)}") from None
+        hint = ""
+        if isinstance(error, OSError) and error.errno in (errno.EROFS, errno.EACCES, errno.EPERM):
+            hint = ": it writes a file as it loads, which it may not here; keep that under if __name__ == \"__main__\":"
+        raise LoadError(f"{name} {path} does not load: {one_line(error)}{hint}") from None
     return module
 
 
@@ -389,8 +393,13 @@ def facts(main, wanted, folder, names):
     data = {name: described(value) for name, value in vars(main).items()
             if not name.startswith("__") and not callable(value)
             and not isinstance(value, (types.ModuleType, type))}
+    classes = {}
+    for name, value in vars(main).items():
+        if isinstance(value, type) and value.__module__ == main.__name__:
+            made = parameters(value)
+            classes[name] = made["names"] if made else []
     return {"functions": functions, "data": data, "defined": sorted(n for n in vars(main) if not n.startswith("__")),
-            "reachable": "all"}
+            "reachable": "all", "classes": classes}
 
 
 # Placing a case's canvas, viewport and scene where the chapter reads them.
@@ -602,11 +611,57 @@ def encoded(answer):
     return text
 
 
-def adapted(adapter_module):
-    """The default adapter with the functions of the student's adapter in its place;
-    their setup and result, when they give them, as own_setup and own_result."""
+def made_by(make, values, check):
+    """What the chapter's own type `make` makes of values (as many as it takes), or None
+    unless it holds them (check)."""
+    try:
+        takes = [p for p in inspect.signature(make).parameters.values()
+                 if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+        made = make(*values[:len(takes)])
+    except Exception:  # not a type this can make: the book's records instead
+        return None
+    return made if check(made) else None
+
+
+def field(value, name):
+    return getattr(value, name) if hasattr(value, name) else value[name]
+
+
+def in_chapter_style(adapter, main):
+    """The adapter's vectors and colours as numpy arrays where the chapter uses numpy, and
+    its spheres made by the chapter's own Sphere where it has one that takes (center,
+    radius, color, specular, reflective) and keeps them."""
+    numpy = next((v for v in vars(main).values()
+                  if isinstance(v, types.ModuleType) and v.__name__ == "numpy"), None)
+    if numpy is not None:
+        adapter.vector = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
+        adapter.color = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
+    own = getattr(main, "Sphere", None)
+    if isinstance(own, type):
+        book = adapter.sphere
+
+        def sphere(value):
+            default = book(value)
+            values = [default.center, default.radius, default.color, default.specular, default.reflective]
+
+            def keeps(made):
+                try:
+                    return field(made, "radius") == default.radius and \
+                        list(field(made, "center")) == list(default.center)
+                except Exception:
+                    return False
+            return made_by(own, values, keeps) or default
+        adapter.sphere = staticmethod(sphere)
+    return adapter
+
+
+def adapted(adapter_module, main):
+    """The default adapter, in the chapter's style, with the functions of the student's
+    adapter in its place; their setup and result, when they give them, as own_setup and
+    own_result."""
     class Adapter(DefaultAdapter):
         pass
+    in_chapter_style(Adapter, main)
     if adapter_module is not None:
         for name in ("vector", "vectors", "point", "color", "booleans", "matrix", "plane",
                      "transform", "triangle", "model", "texture", "tangent_basis", "sphere",
@@ -701,8 +756,11 @@ def main():
     folder = os.path.dirname(module_path)
     sys.argv = [first["module"]]  # as if run alone: nothing of the checker's
     try:
-        adapter = adapted(load(first["adapter"], "your adapter") if first.get("adapter") else None)
         main_module = load(module_path, "your module")
+        # The adapter's `import raytracer` is the chapter as loaded here, not a second copy.
+        sys.modules.setdefault(main_module.__name__, main_module)
+        own_adapter = load(first["adapter"], "your adapter") if first.get("adapter") else None
+        adapter = adapted(own_adapter, main_module)
     except LoadError as error:
         answer({"load_error": str(error)})
         return
