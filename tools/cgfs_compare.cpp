@@ -176,6 +176,16 @@ void RefuseToOverwriteAnInput(const fs::path& destination, const std::string& op
   for (const fs::path& file : inputs) {
     input = input || fs::equivalent(destination, file, error);
   }
+  // The same file as a golden image by device and inode, however it is reached (a link,
+  // a bind mount of one of its folders).
+  if (SomethingAt(destination)) {
+    for (const auto& entry : fs::recursive_directory_iterator(golden, error)) {
+      if (entry.is_regular_file(error) && fs::equivalent(destination, entry.path(), error)) {
+        throw cgfs::UsageError(option + " " + cgfs::Quoted(destination) + " is the golden image " +
+                               cgfs::Quoted(entry.path()) + "; nothing was written");
+      }
+    }
+  }
   if (input) {
     throw cgfs::UsageError(option + " " + cgfs::Quoted(destination) +
                            " is one of the images this run reads; nothing was written");

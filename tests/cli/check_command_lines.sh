@@ -256,6 +256,24 @@ if ! cmp -s "$good" "$work/inputs/02-basic-rays/fig-2-11.png" ||
 fi
 expect 1 "--html beside the folder's images, not over one" "$compare" --report "$work/inputs" \
   --html "$work/inputs/02-basic-rays/page.html"
+# A golden image reached through a bind mount of another folder (bubblewrap makes one)
+# is still that image: refused by device and inode, for --html and --diff alike.
+if command -v bwrap >/dev/null && bwrap --ro-bind / / --unshare-all true 2>/dev/null; then
+  mkdir -p "$work/mounted"
+  mounted() {  # COMPARE ARGUMENTS..., with the golden copy bound at $work/mounted
+    bwrap --dev-bind / / --bind "$work/golden-copy" "$work/mounted" "$@"
+  }
+  expect 2 "--html onto a golden image through a bind mount" mounted "$compare" --golden "$work/golden-copy" \
+    --report "$work/inputs" --html "$work/mounted/02-basic-rays/fig-2-11.png"
+  expect 2 "--diff onto a golden image through a bind mount" mounted "$compare" --golden "$work/golden-copy" \
+    02-basic-rays/fig-2-11 "$good" --diff "$work/mounted/02-basic-rays/fig-2-11-with-ground.png"
+  "$program" --output "$work/golden-again" >/dev/null
+  if ! cmp -s "$work/golden-again/fig-2-11.png" "$work/golden-copy/02-basic-rays/fig-2-11.png" ||
+    ! cmp -s "$work/golden-again/fig-2-11-with-ground.png" "$work/golden-copy/02-basic-rays/fig-2-11-with-ground.png"; then
+    echo "FAIL: a golden image was written over through a bind mount"
+    failures=$((failures + 1))
+  fi
+fi
 # Names as long as a file name may be (255 bytes) are written; the temporary beside
 # them has a name that fits too.
 long=$(printf 'a%.0s' $(seq 1 240))

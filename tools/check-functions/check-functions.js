@@ -20,6 +20,7 @@ const crypto = require("crypto");
 const fs = require("fs");
 const path = require("path");
 const sandbox = require("./sandbox.js");
+const { definedFunctions, heldAgainstFile } = require("./source_facts.js");
 
 const ROOT = path.resolve(__dirname, "..", "..");
 const CASES_DIR = path.join(ROOT, "tests", "cases");
@@ -199,8 +200,14 @@ class ProcessRunner {
     if (message.ended) fail(`your module ${this.options.module} does not load: it ended the process (exit ${message.ended}) while loading`);
     if (typeof message.load_error === "string") fail(message.load_error.split("\n")[0].slice(0, 500));
     const facts = message.loaded;
-    if (!facts || typeof facts !== "object" || typeof facts.functions !== "object") fail(`your module ${this.options.module} does not load: it said something else while loading`);
-    return facts;
+    if (!facts || typeof facts !== "object" || !facts.functions || typeof facts.functions !== "object" ||
+        !Array.isArray(facts.defined)) {
+      fail(`your module ${this.options.module} does not load: it said something else while loading`);
+    }
+    // The process's account of the file, held against what the file says of itself.
+    const defined = definedFunctions(path.resolve(this.options.module), this.language, {
+      python: sandbox.pythonInterpreter()?.executable, nodePath: this.language === "python" ? "" : nodePath() });
+    return heldAgainstFile(facts, defined, functions);
   }
 
   async run(request) {
@@ -218,14 +225,13 @@ class ProcessRunner {
     const limit = this.options.timeLimit;
     this.send({ ...request, id, nonce, limit });
     const answer = await this.next(limit + GRACE);
-    if (answer.timeout || answer.ended || answer.garbled) {
-      this.stop();
-      return { ...answer, limit };
-    }
-    if (answer.id !== id || answer.nonce !== nonce) {
-      this.stop();
-      return { garbled: "answered out of turn (not this case's answer)" };
-    }
+    const ours = answer.id === id && answer.nonce === nonce;
+    // The process's own answer (a case it ended on its time limit included) keeps it;
+    // silence, an end or anything else ends it, and the next case gets a new one.
+    if (!ours) this.stop();
+    if (answer.timeout && !ours) return { timeout: true, limit };
+    if ((answer.ended || answer.garbled) && !ours) return { ...answer, limit };
+    if (!ours) return { garbled: "answered out of turn (not this case's answer)" };
     return { ...answer, limit };
   }
 
@@ -263,6 +269,7 @@ async function main(argv) {
   }
   const totalCases = sections(chapter, files).flatMap((s) => s.entries).reduce((n, e) => n + e.cases.length, 0);
   const runner = new ProcessRunner(options, totalCases);
+  running = runner;
   try {
     if (options.template) {
       const { functionsOf } = await import("./core/plan.mjs");
@@ -281,6 +288,16 @@ async function main(argv) {
   } finally {
     runner.stop();
   }
+}
+
+// However the checker ends (a student's Ctrl-C included), the process it started goes too.
+let running = null;
+process.on("exit", () => running?.stop());
+for (const signal of ["SIGINT", "SIGTERM", "SIGHUP"]) {
+  process.on(signal, () => {
+    running?.stop();
+    process.exit(130);
+  });
 }
 
 main(process.argv.slice(2)).then((status) => { process.exitCode = status; }, (error) => {

@@ -175,8 +175,21 @@ function showValue(value) {
   return text.length > 200 ? `${text.slice(0, 200)}...` : text;
 }
 
+// An answer's shape: what a runner may say, each field of its kind; anything else is
+// not an answer (a process that lies about what it is: a failed case, never a crash).
+const ANSWER_FIELDS = { timeout: "boolean", ended: "string", unreadable: "string", raised: "string",
+  adapter_failed: "string", garbled: "string", limit: "number", id: "number", nonce: "string", stopped: "boolean" };
+function wellFormed(answer) {
+  if (!answer || typeof answer !== "object" || Array.isArray(answer)) return false;
+  if ("placed" in answer && !(Array.isArray(answer.placed) && answer.placed.every((n) => typeof n === "string"))) return false;
+  if ("pixels" in answer && !Array.isArray(answer.pixels)) return false;
+  if ("arguments" in answer && !Array.isArray(answer.arguments)) return false;
+  return Object.entries(ANSWER_FIELDS).every(([name, kind]) => !(name in answer) || typeof answer[name] === kind);
+}
+
 // What happened in a case that did not answer with a value.
 function failureOf(answer, language, adapterGiven) {
+  if (!wellFormed(answer)) return "answered with something that is not an answer";
   if (answer.timeout) return `did not return within ${answer.limit} s`;
   if (answer.ended) return `ended the process it ran in (exit ${answer.ended}) instead of returning`;
   if (answer.unreadable) return answer.unreadable;
@@ -186,6 +199,7 @@ function failureOf(answer, language, adapterGiven) {
       : `the case's inputs could not be made for your code: ${answer.adapter_failed}`;
   }
   if (answer.garbled) return answer.garbled;
+  if (!("returned" in answer) && !("pixels" in answer)) return "answered with something that is not an answer";
   return null;
 }
 

@@ -140,6 +140,9 @@ function inputsOf(kase) {
 async function checkFunction(entry, fact, context) {
   const { runner, facts, file, caseFile, options } = context;
   const name = entry.function.padEnd(22);
+  if (fact.forged) {  // the process's account of the file is not the file's
+    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${entry.cases.length} cases`, `    ${fact.forged}`] };
+  }
   const signature = signatureFor(entry, fact.parameters);
   if (!signature) {
     const takes = `takes ${fact.parameters.names.length} parameters (${fact.parameters.names.join(", ")})`;
@@ -226,7 +229,7 @@ export async function check({ chapter, files, runner, file, adapterGiven = false
         if (section.own && !fact) block.results.push({ lines: [`  ${entry.function.padEnd(22)} not written yet (${entry.cases.length} cases)`] });
         continue;
       }
-      if (!section.own && !signatureFor(entry, fact.parameters)) {
+      if (!section.own && !fact.forged && !signatureFor(entry, fact.parameters)) {
         block.results.push({ lines: [`  ${entry.function.padEnd(22)} not checked against ${section.chapter}.json: yours takes ` +
           `${fact.parameters.names.length} parameters, its cases are for ${entry.call}`] });
         continue;

@@ -17,6 +17,7 @@ alone, after its time limit, without loading the chapter again.
 import ast
 import builtins
 import collections
+import ctypes
 import dis
 import errno
 import importlib.util
@@ -679,7 +680,11 @@ def adapted(adapter_module, main):
 
 def in_child(request, chapter, write_end):
     """Runs in the forked child: the case, its answer written to the parent's pipe."""
-    os.setpgid(0, 0)
+    os.setpgid(0, 0)  # the child and what it starts: ended together after the case
+    try:  # and ended with the parent, should the parent be ended first
+        ctypes.CDLL(None).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    except (AttributeError, OSError):
+        pass
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     try:
         text = encoded(run_case(request, chapter))
