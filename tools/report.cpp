@@ -275,7 +275,10 @@ std::vector<ReportEntry> CompareFolder(const fs::path& folder, const fs::path& g
           comparison.diagnosis.clear();
           entry.message = Describe(comparison, entry.actual.Width(), entry.actual.Height());
           entry.difference = std::move(comparison.difference);
-        } catch (const Error& bad) {
+        } catch (const Error& bad) {  // not an image we can read
+          entry.verdict = ReportEntry::Verdict::kUnreadable;
+          entry.message = bad.what();
+        } catch (const std::invalid_argument& bad) {  // another size than ours
           entry.verdict = ReportEntry::Verdict::kUnreadable;
           entry.message = bad.what();
         }

@@ -6,11 +6,11 @@
 #include <functional>
 #include <iomanip>
 #include <map>
+#include <stdexcept>
 #include <sstream>
 #include <tuple>
 #include <utility>
 
-#include "program/error.h"
 
 namespace cgfs {
 
@@ -225,7 +225,7 @@ long long Tolerance::AllowedDifferingPixels(long long pixels) const {
 
 Comparison CompareImages(const Image& expected, const Image& actual, const Tolerance& tolerance) {
   if (expected.Width() != actual.Width() || expected.Height() != actual.Height()) {
-    throw Error("image sizes differ: expected " + std::to_string(expected.Width()) + "x" +
+    throw std::invalid_argument("image sizes differ: expected " + std::to_string(expected.Width()) + "x" +
                 std::to_string(expected.Height()) + ", got " + std::to_string(actual.Width()) +
                 "x" + std::to_string(actual.Height()));
   }

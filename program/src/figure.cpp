@@ -57,10 +57,14 @@ View ParseView(const std::string& text) {
   std::istringstream in(text);
   double values[5];
   char comma = ',';
+  constexpr double kLargest = 1e6;  // a camera a million units away sees nothing of a scene
+  constexpr const char* kNames[] = {"x", "y", "z", "yaw", "pitch"};
   for (int i = 0; i < 5; ++i) {
-    if ((i > 0 && (!(in >> comma) || comma != ',')) || !(in >> values[i]) ||
-        !std::isfinite(values[i]) || std::abs(values[i]) > 1e6) {
+    if ((i > 0 && (!(in >> comma) || comma != ',')) || !(in >> values[i])) {
       throw UsageError("'" + text + "' is not five numbers x,y,z,yaw,pitch");
+    }
+    if (!std::isfinite(values[i]) || std::abs(values[i]) > kLargest) {
+      throw UsageError("'" + text + "': " + kNames[i] + " is out of range (at most 1e6 either way)");
     }
   }
   if (in >> comma) {

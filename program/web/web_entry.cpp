@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "comparison/compare.h"
 #include "program/camera_controls.h"
 #include "program/figure.h"
 #include "scenes.h"
@@ -31,6 +32,7 @@ const std::vector<cgfs::Figure>& ChapterFigures() {
 }
 
 cgfs::View view;                   // the camera's view, for the figures that have one
+cgfs::Comparison comparison;       // the last comparison of a reader's image with a figure
 std::vector<std::uint8_t> pixels;  // the last figure drawn, RGBA
 std::string text;                  // what the last call that returns text returned
 std::string last_error;
@@ -137,6 +139,51 @@ EMSCRIPTEN_KEEPALIVE const std::uint8_t* Pixels() {
 }
 EMSCRIPTEN_KEEPALIVE const char* LastError() {
   return last_error.c_str();
+}
+
+// A reader's image of figure `index` (RGBA, width x height, from the page's "Your code"),
+// compared with the figure drawn at that size from the chapter's own view, as cgfs-compare
+// compares an image with a golden one: 1 when they match, 0 when not, -1 with LastError().
+// ComparisonText() then says what cgfs-compare says (its numbers, verdict and diagnosis),
+// Pixels() holds the difference image, and DifferingColumn() and DifferingRow() the first
+// differing pixel (-1 when none).
+EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height, const std::uint8_t* rgba) {
+  const cgfs::Figure* figure = FigureAt(index);
+  if (figure == nullptr) {
+    return -1;
+  }
+  try {
+    const cgfs::Canvas ours = cgfs::RenderFigure(*figure, width, height, cgfs::View{});
+    cgfs::Image theirs(width, height);
+    for (int row = 0; row < height; ++row) {
+      for (int column = 0; column < width; ++column) {
+        const std::uint8_t* pixel = rgba + (static_cast<std::size_t>(row) * width + column) * 4;
+        theirs.Set(column, row, {pixel[0], pixel[1], pixel[2]});
+      }
+    }
+    comparison = cgfs::CompareImages(ours.GetImage(), theirs);
+    const auto& rgb = comparison.difference.Bytes();
+    pixels.resize(rgb.size() / 3 * 4);
+    for (std::size_t from = 0, to = 0; from < rgb.size(); from += 3, to += 4) {
+      pixels[to] = rgb[from];
+      pixels[to + 1] = rgb[from + 1];
+      pixels[to + 2] = rgb[from + 2];
+      pixels[to + 3] = 255;
+    }
+    return comparison.passed ? 1 : 0;
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return -1;
+  }
+}
+EMSCRIPTEN_KEEPALIVE const char* ComparisonText() {
+  return Text(cgfs::Describe(comparison, comparison.difference.Width(), comparison.difference.Height()));
+}
+EMSCRIPTEN_KEEPALIVE int DifferingColumn() {
+  return comparison.differing_pixels > 0 ? comparison.first_differing.column : -1;
+}
+EMSCRIPTEN_KEEPALIVE int DifferingRow() {
+  return comparison.differing_pixels > 0 ? comparison.first_differing.row : -1;
 }
 
 // The camera: a key (a cgfs::CameraKey, 0 to 9), a drag, back to the chapter's view,

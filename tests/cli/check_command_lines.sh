@@ -126,6 +126,10 @@ if [ -n "$chapter16" ]; then
   expect 0 "chapter 16: a view a million units the other way, looking down" "$chapter16" \
     --output "$work/ch16-far" --size 8x8 --figure business-card-1-sample \
     --view -1e6,-1e6,1e6,45,-60
+  expect 2 "chapter 16: a view past a million units" "$chapter16" --output "$work/bad" \
+    --size 8x8 --figure business-card-1-sample --view 1e9,0,0,0,0
+  grep -qF "'1e9,0,0,0,0': x is out of range (at most 1e6 either way)" "$work/stderr" ||
+    { echo "FAIL: a view out of range is not said to be"; failures=$((failures + 1)); }
   expect 2 "chapter 16: zero samples" "$chapter16" --samples 0 --output "$work/bad"
   expect 2 "chapter 16: too many samples" "$chapter16" --samples 5000 --output "$work/bad"
   expect 2 "chapter 16: samples not a number" "$chapter16" --samples lots --output "$work/bad"

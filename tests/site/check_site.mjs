@@ -99,7 +99,9 @@ class Browser {
   async Open(page) {
     const url = `file://${site}/${page}`;
     await this.Send('Page.navigate', {url});
-    return this.WaitFor(`location.href === ${JSON.stringify(url)} && document.readyState === 'complete' && ` +
+    // The page keeps the figure shown in its address: compared without the query.
+    const bare = url.replace(/[?#].*$/, '');
+    return this.WaitFor(`location.href.replace(/[?#].*$/, '') === ${JSON.stringify(bare)} && document.readyState === 'complete' && ` +
                         "(document.getElementById('live')?.dataset.ready === 'yes' || " +
                         "!document.getElementById('status')?.textContent.startsWith('Loading'))", `${page} loads`);
   }
@@ -152,7 +154,7 @@ const Chapters = () => readdirSync(join(repo, 'chapters')).filter((name) => /^\d
 // Clicks figure `index`'s button and waits for its full frame.
 async function ShowFigure(browser, index) {
   await browser.Evaluate(`(() => { const canvas = document.getElementById('canvas');
-    delete canvas.dataset.drawn; document.querySelectorAll('#figures button')[${index}].click(); })()`);
+    delete canvas.dataset.drawn; document.querySelectorAll('#figure-lists button')[${index}].click(); })()`);
   return browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `figure ${index} drawn`);
 }
 
@@ -160,7 +162,7 @@ async function CheckEveryFigure(browser) {
   let compared = 0;
   for (const chapter of Chapters()) {
     if (!await browser.Open(`${chapter}/index.html`)) continue;
-    const names = await browser.Evaluate("Array.from(document.querySelectorAll('#figures button'), (b) => b.textContent)");
+    const names = await browser.Evaluate("Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)");
     for (const [index, name] of names.entries()) {
       await ShowFigure(browser, index);
       const problem = await browser.Evaluate("document.getElementById('problem').textContent");
@@ -203,10 +205,13 @@ async function CheckCamera(browser, chapter, figure) {
   // the keys below and be taken for a frame of the moving camera.
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the first frame`);
   await browser.Evaluate("document.body.focus()");
+  await browser.Evaluate("delete document.getElementById('canvas').dataset.drawn");
   for (const key of ['ArrowUp', 'ArrowUp', 'q']) await browser.Key(key);
-  const drawn = await browser.Evaluate(
-      "new Promise((r) => requestAnimationFrame(() => r(document.getElementById('canvas').dataset.drawn)))");
+  // The frames come from the page's worker: the first after the keys, at half size.
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn !== undefined", `${chapter}: a frame after the keys`, 10);
+  const drawn = await browser.Evaluate("document.getElementById('canvas').dataset.drawn");
   if (drawn !== 'preview') Fail(`${chapter}: the frame while the camera moves is drawn '${drawn}', not at half size`);
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the settled frame after the keys`);
   const walked = await browser.Evaluate("document.getElementById('view').textContent");
   // Forward a quarter unit twice, turned 5 degrees left once (program/camera_controls.h).
   if (walked !== '0,0,0.5,5,0') Fail(`${chapter}: after Up, Up, Q the page shows the view ${walked}, not 0,0,0.5,5,0`);
@@ -277,7 +282,7 @@ function CheckLinks() {
 async function Speed(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
   const index = await browser.Evaluate(
-      `Array.from(document.querySelectorAll('#figures button'), (b) => b.textContent).indexOf('${figure}')`);
+      `Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent).indexOf('${figure}')`);
   const page = [];
   for (let i = 0; i < 15; ++i) {
     await ShowFigure(browser, index);

@@ -1,9 +1,11 @@
 // A chapter's page (made by make_site.py): its figures drawn by the chapter's C++,
-// compiled to WebAssembly (figures.js, program/web/web_entry.cpp), one button per
-// figure, and for a figure with a camera the window's keys and mouse drag
-// (program/camera_controls.h). The page opens at ?figure=NAME&view=x,y,z,yaw,pitch
-// when asked; one it cannot show is said in the page, and the chapter's first figure
-// drawn instead.
+// compiled to WebAssembly (program/web/web_entry.cpp), in a worker (figures_client.js),
+// so that the page answers while a figure takes seconds; a list of the figures and of
+// the views of where the work goes; for a figure with a camera, the window's keys and
+// mouse drag (program/camera_controls.h), and buttons for a screen without keys. The
+// page opens at ?figure=NAME&view=x,y,z,yaw,pitch when asked, and keeps the figure shown
+// in its address; what it cannot show is said in the page, and the chapter's opening
+// figure drawn instead.
 'use strict';
 
 // The keys of program/camera_controls.h's CameraKey, in its order (0 to 9), named as
@@ -17,11 +19,15 @@ const canvas = document.getElementById('canvas');
 const sizes = JSON.parse(live.dataset.sizes);
 const SizeOf = (name) => sizes[name] ?? [600, 600];
 
-let chapter = null;   // the chapter's WebAssembly module
-let figures = [];     // {name, caption, hasCamera, button}
-let shown = 0;        // the index of the figure shown
-let settle = null;    // the timer that draws the full frame once the camera stops
-let pending = false;  // a half-size frame is asked for and not drawn yet
+let figuresWorker = null;
+let figures = [];      // {name, caption, hasCamera, costPartner, hasCostView, button}
+let shown = 0;         // the index of the figure shown
+let view = '0,0,0,0,0';  // the camera's view, kept here: a worker ended mid-draw forgets it
+let settleTime = 150;
+let settle = null;     // the timer that draws the full frame once the camera stops
+let wanted = null;     // the frame to draw when the worker is free: 'full' or 'preview'
+let drawing = false;   // a Draw loop is running
+let generation = 0;    // counts the worker's restarts: a loop of an earlier one stops
 
 function Say(id, text) {
   const element = document.getElementById(id);
@@ -29,25 +35,13 @@ function Say(id, text) {
   element.hidden = text === '';
 }
 
-function Text(pointer) { return chapter.UTF8ToString(pointer); }
-
-// Draws the figure shown, at its full size or, while the camera moves, at the preview
-// size stretched over the canvas (as the window does), and says how long it took.
-function Draw(full) {
-  const figure = figures[shown];
-  const [width, height] = SizeOf(figure.name);
-  const side = (n) => (full ? n : chapter._PreviewSide(n));
-  const start = performance.now();
-  if (!chapter._DrawFigure(shown, side(width), side(height))) {
-    Say('problem', `${figure.name} could not be drawn: ${Text(chapter._LastError())}`);
-    return;
-  }
-  const milliseconds = performance.now() - start;
-  const bytes = side(width) * side(height) * 4;
-  const pixels = new Uint8ClampedArray(chapter.HEAPU8.buffer, chapter._Pixels(), bytes);
-  const image = new ImageData(new Uint8ClampedArray(pixels), side(width), side(height));
+// Puts a frame on the canvas: a full one as it is, a preview stretched to the figure's
+// size (as the window does).
+function Show(frame, full, width, height) {
+  const image = new ImageData(new Uint8ClampedArray(frame.pixels.buffer), frame.width, frame.height);
   canvas.width = width;
   canvas.height = height;
+  canvas.style.maxWidth = `${width}px`;  // a 512-pixel figure at its own size, not stretched
   if (full) {
     canvas.getContext('2d').putImageData(image, 0, 0);
   } else {
@@ -57,31 +51,66 @@ function Draw(full) {
     context.imageSmoothingEnabled = false;
     context.drawImage(preview, 0, 0, width, height);
   }
-  const time = milliseconds < 10 ? milliseconds.toFixed(1) : milliseconds.toFixed(0);
-  Say('status', `${figure.name}: ${side(width)} × ${side(height)} drawn in ${time} ms` +
-                (full ? '' : ', at half size while the camera moves'));
-  canvas.dataset.drawn = full ? 'full' : 'preview';
-  canvas.dataset.milliseconds = milliseconds;
 }
 
-// The view shown, and a link that opens the page at it and at this figure.
+// Draws the figure shown, in the worker, at its full size or while the camera moves at
+// the preview size; one frame at a time, the latest one wanted next.
+async function Draw(full) {
+  wanted = full || wanted === 'full' ? 'full' : 'preview';
+  if (drawing) return;
+  drawing = true;
+  const mine = generation;
+  while (wanted && mine === generation) {
+    const isFull = wanted === 'full';
+    wanted = null;
+    const index = shown;
+    const figure = figures[index];
+    const [width, height] = SizeOf(figure.name);
+    const frame = await figuresWorker.Request({ op: 'draw', index, width, height, full: isFull,
+      view: figure.hasCamera ? view : undefined });
+    if (frame.cancelled || index !== shown || mine !== generation) continue;
+    if (frame.problem) {
+      Say('problem', `${figure.name} could not be drawn: ${frame.problem}`);
+      continue;
+    }
+    Show(frame, isFull, width, height);
+    const time = frame.milliseconds < 10 ? frame.milliseconds.toFixed(1) : frame.milliseconds.toFixed(0);
+    Say('status', `${figure.name}: ${frame.width} × ${frame.height} drawn in ${time} ms` +
+                  (isFull ? '' : ', at half size while the camera moves'));
+    canvas.dataset.drawn = isFull ? 'full' : 'preview';
+    canvas.dataset.milliseconds = frame.milliseconds;
+  }
+  if (mine === generation) drawing = false;
+}
+
+// The address: the figure shown, and its view where it has a camera.
+function Address() {
+  const figure = figures[shown];
+  const query = new URLSearchParams({ figure: figure.name });
+  if (figure.hasCamera) query.set('view', view);
+  return '?' + query.toString();
+}
+
 function ShowView() {
   const figure = figures[shown];
-  const query = new URLSearchParams({figure: figure.name});
   document.getElementById('camera').hidden = !figure.hasCamera;
-  if (figure.hasCamera) {
-    const view = Text(chapter._ViewText());
-    document.getElementById('view').textContent = view;
-    query.set('view', view);
-  }
-  document.getElementById('view-link').href = '?' + query.toString();
+  document.getElementById('view').textContent = view;
+  document.getElementById('view-link').href = Address();
+  history.replaceState(null, '', Address());
 }
 
-// Shows figure `index`: its button pressed, its caption, then its frame, drawn once
-// the page has shown that it is drawing (some figures take seconds).
+// Shows figure `index`: its button pressed, its caption, then its frame. A figure still
+// being drawn is given up (the worker is ended and made anew: the business card takes
+// seconds).
 function Select(index) {
+  if (figuresWorker.Busy) {
+    figuresWorker.Restart();
+    ++generation;
+    drawing = false;
+  }
   shown = index;
   figures.forEach((figure, i) => figure.button.setAttribute('aria-checked', i === index));
+  figures[index].button.scrollIntoView({ block: 'nearest' });
   Say('caption', figures[index].caption);
   Say('status', `drawing ${figures[index].name}…`);
   const partner = figures[index].costPartner;
@@ -91,34 +120,48 @@ function Select(index) {
       ? `where the work goes: ${figures[partner].name} (C)` : `back to ${figures[partner].name} (C)`;
   }
   ShowView();
+  delete canvas.dataset.drawn;
   requestAnimationFrame(() => setTimeout(() => Draw(true)));
 }
 
-// After the camera moved: a half-size frame at the next animation frame, the full one
+// After the camera moved: a half-size frame as soon as the worker is free, the full one
 // once no key or drag has come for the settling time.
 function CameraMoved() {
   ShowView();
-  if (!pending) {
-    pending = true;
-    requestAnimationFrame(() => { pending = false; Draw(false); });
-  }
+  delete canvas.dataset.drawn;
+  Draw(false);
   clearTimeout(settle);
-  settle = setTimeout(() => Draw(true), chapter._SettleMilliseconds());
+  settle = setTimeout(() => Draw(true), settleTime);
+}
+
+// Moves the camera in the worker (program/camera_controls.h's arithmetic); the moves
+// one after the other, each from the view the one before left.
+let moves = Promise.resolve();
+function MoveCamera(move) {
+  moves = moves.then(async () => {
+    const answer = await figuresWorker.Request({ op: 'camera', view, ...move });
+    if (answer.cancelled) return;
+    if (answer.problem) {
+      Say('problem', answer.problem);
+      return;
+    }
+    view = answer.view;
+    CameraMoved();
+  });
 }
 
 function OnKey(event) {
   if (event.altKey || event.ctrlKey || event.metaKey) return;
+  if (event.target.closest?.('#your-code, input, textarea, select, .CodeMirror')) return;
   const key = event.key.length === 1 ? event.key.toLowerCase() : event.key;
   if (key === 'ArrowLeft' || key === 'ArrowRight') {
     Select((shown + (key === 'ArrowLeft' ? figures.length - 1 : 1)) % figures.length);
   } else if (key === 'c' && figures[shown].costPartner >= 0) {
     Select(figures[shown].costPartner);
   } else if (figures[shown].hasCamera && kCameraKeys.includes(key)) {
-    chapter._PressCameraKey(kCameraKeys.indexOf(key));
-    CameraMoved();
+    MoveCamera({ key: kCameraKeys.indexOf(key) });
   } else if (figures[shown].hasCamera && key === 'r') {
-    chapter._ResetView();
-    CameraMoved();
+    MoveCamera({ reset: true });
   } else {
     return;
   }
@@ -142,66 +185,112 @@ function FollowDrags() {
     const down = Math.round((event.clientY - last[1]) * scale);
     if (right === 0 && down === 0) return;
     last = [last[0] + right / scale, last[1] + down / scale];
-    chapter._DragCamera(right, down);
-    CameraMoved();
+    MoveCamera({ drag: [right, down] });
   });
   const stop = () => { last = null; };
   canvas.addEventListener('pointerup', stop);
   canvas.addEventListener('pointercancel', stop);
 }
 
-// The figure and view the address asks for; what cannot be shown is said.
-function Opening() {
+// The buttons that walk and turn the camera on a screen without keys: each a key of
+// kCameraKeys, repeated while held.
+function CameraButtons() {
+  for (const button of document.querySelectorAll('#camera-pad button[data-key]')) {
+    let repeat = null;
+    const press = () => MoveCamera({ key: Number(button.dataset.key) });
+    button.addEventListener('pointerdown', (event) => {
+      event.preventDefault();
+      press();
+      clearInterval(repeat);
+      repeat = setInterval(press, 120);
+    });
+    for (const end of ['pointerup', 'pointerleave', 'pointercancel']) {
+      button.addEventListener(end, () => clearInterval(repeat));
+    }
+  }
+  document.getElementById('camera-reset').addEventListener('click', () => MoveCamera({ reset: true }));
+}
+
+// The figure and view the address asks for, or the chapter's opening figure; what
+// cannot be shown is said.
+async function Opening() {
   const query = new URLSearchParams(location.search);
   const problems = [];
-  let index = 0;
+  const opening = figures.findIndex((figure) => figure.name === live.dataset.opening);
+  let index = Math.max(0, opening);
   if (query.has('figure')) {
-    index = figures.findIndex((figure) => figure.name === query.get('figure'));
-    if (index < 0) {
-      problems.push(`This chapter has no figure "${query.get('figure')}"; its figures are the buttons above.`);
-      index = 0;
+    const asked = figures.findIndex((figure) => figure.name === query.get('figure'));
+    if (asked < 0) {
+      problems.push(`This chapter has no figure "${query.get('figure')}"; its figures are listed above.`);
+    } else {
+      index = asked;
     }
   }
   if (query.has('view')) {
     if (!figures[index].hasCamera) {
       problems.push(`${figures[index].name} has no camera to move; the view "${query.get('view')}" is not used.`);
     } else {
-      const text = chapter.allocateUTF8(query.get('view'));
-      if (!chapter._SetView(text)) {
-        problems.push(`No view "${query.get('view')}": ${Text(chapter._LastError())}; the chapter's own view is shown.`);
-      }
-      chapter._free(text);
+      const answer = await figuresWorker.Request({ op: 'camera', set: query.get('view') });
+      if (answer.problem) problems.push(`No view "${query.get('view')}": ${answer.problem}; the chapter's own view is shown.`);
+      else view = answer.view;
     }
   }
   Say('problem', problems.join(' '));
   return index;
 }
 
-function Start(module) {
-  chapter = module;
-  const list = document.getElementById('figures');
-  for (let i = 0; i < chapter._FigureCount(); ++i) {
-    const figure = {name: Text(chapter._FigureName(i)), caption: Text(chapter._FigureCaption(i)),
-                    hasCamera: chapter._FigureHasCamera(i) === 1,
-                    costPartner: chapter._FigureCostPartner(i),
-                    hasCostView: chapter._FigureHasCostView(i) === 1};
+// The figures, in two lists: the figures, and the views of where the work goes (those
+// another figure's C switches to).
+function ListFigures(described) {
+  const isCostView = (figure) => figure.costPartner >= 0 && !figure.hasCostView;
+  for (const [i, each] of described.entries()) {
+    const figure = { ...each };
     figure.button = document.createElement('button');
     figure.button.type = 'button';
     figure.button.textContent = figure.name;
     figure.button.setAttribute('role', 'radio');
     figure.button.addEventListener('click', () => Select(i));
-    list.append(figure.button);
+    document.getElementById(isCostView(figure) ? 'cost-views' : 'figures').append(figure.button);
     figures.push(figure);
   }
+  document.getElementById('cost-views-group').hidden = !figures.some(isCostView);
+}
+
+// The other column's two tabs: the chapter's README, and the reader's own code.
+function Tabs() {
+  const tabs = [['tab-readme', 'readme'], ['tab-code', 'your-code']];
+  const show = (chosen) => {
+    for (const [tab, panel] of tabs) {
+      document.getElementById(tab).setAttribute('aria-selected', tab === chosen);
+      const element = document.getElementById(panel);
+      if (element) element.hidden = tab !== chosen;
+    }
+    document.dispatchEvent(new CustomEvent('cgfs-tab', { detail: chosen }));
+  };
+  for (const [tab] of tabs) document.getElementById(tab).addEventListener('click', () => show(tab));
+  if (!document.getElementById('your-code')) document.getElementById('tabs').hidden = true;
+  if (location.hash === '#your-code') show('tab-code');
+}
+
+async function Start() {
+  Tabs();
+  figuresWorker = new FiguresWorker(live.dataset.module, CGFS_FIGURES_OF[live.dataset.chapter], (fraction) => {
+    Say('status', `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
+  });
+  const described = await figuresWorker.Request({ op: 'describe' });
+  if (described.problem) throw new Error(described.problem);
+  settleTime = described.settle;
+  ListFigures(described.figures);
   document.getElementById('cost').addEventListener('click', () => Select(figures[shown].costPartner));
-  document.getElementById('reset').addEventListener('click', () => { chapter._ResetView(); CameraMoved(); });
+  document.getElementById('reset').addEventListener('click', () => MoveCamera({ reset: true }));
   document.addEventListener('keydown', OnKey);
   FollowDrags();
-  Select(Opening());
+  CameraButtons();
+  Select(await Opening());
   live.dataset.ready = 'yes';
 }
 
-window[live.dataset.module]().then(Start, (error) => {
+Start().catch((error) => {
   Say('status', '');
-  Say('problem', `The chapter's code could not be loaded: ${error}`);
+  Say('problem', `The chapter's code could not be loaded: ${error.message ?? error}`);
 });

@@ -1,7 +1,8 @@
-// The index page (made by make_site.py): a small picture of each chapter's first
-// figure, drawn as the page loads by the chapter's own C++ compiled to WebAssembly
-// (its figures.js) at the figure's own size, since the rasterizer chapters draw in
-// canvas pixels; one chapter after the other, so that the page stays responsive.
+// The index page (made by make_site.py): a small picture of each chapter's opening
+// figure, drawn as the page loads by the chapter's own C++ compiled to WebAssembly, in a
+// worker (figures_client.js), so that the page scrolls while they are drawn: at the
+// figure's own size, since the rasterizer chapters draw in canvas pixels, then shrunk;
+// one chapter after the other.
 'use strict';
 
 // Shrinks RGBA pixels by a whole factor, each small pixel the darkest of the block
@@ -23,26 +24,29 @@ function Shrink(pixels, width, height, factor) {
 }
 
 async function DrawThumbnail(canvas) {
-  const chapter = await window[canvas.dataset.module]();
-  const name = chapter.UTF8ToString(chapter._FigureName(0));
-  const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600];  // its golden image's
-  if (!chapter._DrawFigure(0, width, height)) {
-    canvas.title = chapter.UTF8ToString(chapter._LastError());
-    return;
+  const worker = new FiguresWorker(canvas.dataset.module, CGFS_FIGURES_OF[canvas.dataset.chapter]);
+  try {
+    const { figures, problem } = await worker.Request({ op: 'describe' });
+    if (problem) throw new Error(problem);
+    const index = Math.max(0, figures.findIndex((figure) => figure.name === canvas.dataset.opening));
+    const name = figures[index].name;
+    const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600];  // its golden image's
+    const frame = await worker.Request({ op: 'draw', index, width, height, full: true });
+    if (frame.problem) throw new Error(frame.problem);
+    const small = Shrink(frame.pixels, width, height, Math.ceil(width / canvas.width));
+    canvas.width = small.width;
+    canvas.height = small.height;
+    canvas.getContext('2d').putImageData(small, 0, 0);
+    canvas.title = name;
+  } catch (error) {
+    canvas.title = String(error.message ?? error);
+  } finally {
+    worker.worker.terminate();
   }
-  const pixels = new Uint8ClampedArray(chapter.HEAPU8.buffer, chapter._Pixels(), width * height * 4);
-  const small = Shrink(pixels, width, height, Math.ceil(width / canvas.width));
-  canvas.width = small.width;
-  canvas.height = small.height;
-  canvas.getContext('2d').putImageData(small, 0, 0);
-  canvas.title = name;
 }
 
 async function DrawThumbnails() {
-  for (const canvas of document.querySelectorAll('canvas.thumbnail')) {
-    await DrawThumbnail(canvas);
-    await new Promise((resolve) => setTimeout(resolve, 0));  // let the page draw it
-  }
+  for (const canvas of document.querySelectorAll('canvas.thumbnail')) await DrawThumbnail(canvas);
   document.body.dataset.thumbnails = 'drawn';
 }
 

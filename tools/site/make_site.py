@@ -29,6 +29,12 @@ IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".svg"}
 LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a page
 
 
+# The figure a chapter's page opens at, when not its first: the business card's first
+# takes seconds; its one-sample version shows the same scene at once. The index's small
+# pictures are these too.
+OPENING_FIGURES = {"16-business-card": "business-card-1-sample"}
+
+
 class SiteError(Exception):
     pass
 
@@ -172,6 +178,7 @@ class Site:
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>{html.escape(title)}</title>
 <link rel="stylesheet" href="{css}">
+<link rel="icon" href="data:,">
 </head>
 <body>
 <header><a href="{home}">Computer Graphics from Scratch — a C++ companion</a></header>
@@ -188,7 +195,6 @@ class Site:
         title = re.search(r"<h1[^>]*>(.*?)</h1>", article)
         title = re.sub(r"<[^>]*>", "", title.group(1)) if title else chapter
         sizes = self.figure_sizes(chapter)
-        self.folder.write(f"{chapter}/figures.js", (self.web_build / f"{chapter}.js").read_bytes())
         index = self.chapters.index(chapter)
         around = []
         if index > 0:
@@ -199,18 +205,28 @@ class Site:
         code = [f'<a href="source/index.html">its source files</a>']
         code.append(f'<a href="diff.html">its diff from {base}</a>' if base
                     else "no diff: it starts afresh, every file is new")
+        opening = OPENING_FIGURES.get(chapter, "")
         body = f"""<nav>{" · ".join(around)} · {" · ".join(code)}</nav>
 <main class="chapter">
-<section id="live" data-module="Chapter{chapter[:2]}" data-sizes='{json.dumps(sizes)}'>
+<section id="live" data-chapter="{chapter}" data-module="Chapter{chapter[:2]}" data-sizes='{json.dumps(sizes)}' data-opening="{opening}">
+<div id="figure-lists">
 <div id="figures" role="radiogroup" aria-label="figures"></div>
-<canvas id="canvas" width="600" height="600"></canvas>
+<div id="cost-views-group" hidden><span>where the work goes:</span>
+<div id="cost-views" role="radiogroup" aria-label="where the work goes"></div></div>
+</div>
 <p id="caption"></p>
-<p><button id="cost" type="button" hidden title="where the work goes, pixel by pixel"></button></p>
 <p id="status">Loading the chapter's code…</p>
 <p id="problem" hidden></p>
+<canvas id="canvas" width="600" height="600"></canvas>
+<p><button id="cost" type="button" hidden title="where the work goes, pixel by pixel"></button></p>
 <div id="camera" hidden>
 <p>The view: <code id="view"></code> · <a id="view-link" href="">a link to this view</a>
 · <button id="reset" type="button">back to the chapter's view (R)</button></p>
+<div id="camera-pad" aria-label="move the camera">
+<button type="button" data-key="6" title="turn left (Q)">⟲</button><button type="button" data-key="0" title="forward (↑)">▲</button><button type="button" data-key="7" title="turn right (E)">⟳</button><button type="button" data-key="8" title="look up (Home)">⤒</button><button type="button" data-key="4" title="up (PgUp)">⇞</button>
+<button type="button" data-key="3" title="left (A)">◀</button><button type="button" data-key="1" title="back (↓)">▼</button><button type="button" data-key="2" title="right (D)">▶</button><button type="button" data-key="9" title="look down (End)">⤓</button><button type="button" data-key="5" title="down (PgDn)">⇟</button>
+<button type="button" id="camera-reset" title="back to the chapter's view (R)">R</button>
+</div>
 <p class="keys"><kbd>↑</kbd> <kbd>↓</kbd> forward, back · <kbd>A</kbd> <kbd>D</kbd> left, right ·
 <kbd>PgUp</kbd> <kbd>PgDn</kbd> up, down · <kbd>Q</kbd> <kbd>E</kbd> turn · <kbd>Home</kbd> <kbd>End</kbd>
 look up, down · drag the picture to turn and look · <kbd>←</kbd> <kbd>→</kbd> figures.
@@ -220,15 +236,33 @@ differs by one, since this build's C library and Linux's round the last bit of s
 cos apart for a few angles in a hundred.</p>
 </div>
 <p class="note">Drawn in your browser by this chapter's C++, compiled to WebAssembly,
-on one thread: the native programs of chapters 5, 16 and 17 use every core, here their
-<code>all</code> optimisations use one worker. Every figure is the same, byte for byte,
-as the native program's golden image.</p>
+on one thread beside the page's: the native programs of chapters 5, 16 and 17 use every
+core, here their <code>all</code> optimisations use one worker. Every figure is the same,
+byte for byte, as the native program's golden image.</p>
 </section>
-<article class="readme">
+<div id="side">
+<div id="tabs" role="tablist">
+<button type="button" role="tab" id="tab-readme" aria-selected="true" aria-controls="readme">The chapter</button>
+<button type="button" role="tab" id="tab-code" aria-selected="false" aria-controls="your-code">Your code</button>
+</div>
+<article class="readme" id="readme" role="tabpanel">
 {article}
 </article>
+{self.your_code_panel(chapter)}
+</div>
 </main>"""
-        self.page(site_page, f"{chapter} — {title}", body, [f"{chapter}/figures.js", "chapter.js"])
+        self.folder.write(f"{chapter}/figures-source.js",
+                          "var CGFS_FIGURES_OF = self.CGFS_FIGURES_OF || {};\n"
+                          f"CGFS_FIGURES_OF[{json.dumps(chapter)}] = {json.dumps((self.web_build / f'{chapter}.js').read_text())};\n")
+        self.page(site_page, f"{chapter} — {title}", body,
+                  [f"{chapter}/figures-source.js", "vendor/sources.js", "figures_client.js", "chapter.js",
+                   *self.your_code_scripts(chapter)])
+
+    def your_code_panel(self, chapter):
+        return ""
+
+    def your_code_scripts(self, chapter):
+        return []
 
     def figure_sizes(self, chapter):
         """Each figure's size: its golden image's, which the native program draws at."""
@@ -346,6 +380,7 @@ the chapter it continues · <a href="source/index.html">its source files</a></na
                           lambda m: f'<a href="{m.group(1)}/index.html"><canvas class="thumbnail" '
                                     f'data-chapter="{m.group(1)}" data-module="Chapter{m.group(2)}" '
                                     f"data-sizes='{json.dumps(self.figure_sizes(m.group(1)))}' "
+                                    f'data-opening="{OPENING_FIGURES.get(m.group(1), "")}" '
                                     f'width="150" height="150"></canvas></a>', rendered)
         speed = self.markdown_text(speed_table, "index.html") if speed_table else ""
         body = f"""<main class="text index">
@@ -359,14 +394,22 @@ programs, run the tests and compare your own images with these.</p>
 {speed}
 </main>"""
         self.page("index.html", "Computer Graphics from Scratch — a C++ companion", body,
-                  [f"{c}/figures.js" for c in self.chapters] + ["index.js"])
+                  [f"{c}/figures-source.js" for c in self.chapters] + ["vendor/sources.js", "figures_client.js", "index.js"])
 
     def markdown_text(self, path, site_page):
         return self.markdown(os.path.relpath(path, self.repo), site_page)
 
+    def vendor_sources(self):
+        """vendor/sources.js: the text of every worker's own code, for the pages to make
+        their workers from (a page opened from a file may start a worker from a Blob,
+        not from a file)."""
+        sources = {"figuresWorker": (SITE_FILES / "figures_worker.js").read_text()}
+        self.folder.write("vendor/sources.js", f"var CGFS_SOURCES = {json.dumps(sources)};\n")
+
     def build(self):
-        for name in ("chapter.js", "index.js", "site.css"):
+        for name in ("chapter.js", "index.js", "figures_client.js", "site.css"):
             self.folder.write(name, (SITE_FILES / name).read_bytes())
+        self.vendor_sources()
         for chapter in self.chapters:
             if not (self.web_build / f"{chapter}.js").is_file():
                 raise SiteError(f"no {self.web_build}/{chapter}.js: build the web preset first")

@@ -53,7 +53,7 @@ inline constexpr char kDifferenceLegend[] =
     "red: in ours only (missing), blue: in yours only (extra), purple: in both, other colour; "
     "orange: within the tolerance";
 
-// Throws cgfs::Error when the sizes differ.
+// Throws std::invalid_argument when the sizes differ.
 Comparison CompareImages(const Image& expected, const Image& actual,
                          const Tolerance& tolerance = {});
 

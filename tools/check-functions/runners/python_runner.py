@@ -676,6 +676,108 @@ def adapted(adapter_module, main):
     return Adapter
 
 
+# A figure drawn with the chapter's own functions (a chapter page's Draw).
+
+def channel(value):
+    """A colour channel as a canvas keeps it: clamped to 0..255, rounded half up."""
+    if not value > 0:
+        return 0
+    return 255 if value >= 255 else math.floor(value + 0.5)
+
+
+def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
+    """Draws a figure (tools/site/drawings.json) with the chapter's functions: its
+    canvas, viewport and scene put where the chapter reads them, as a case's are, then a
+    ray per pixel through the chapter's TraceRay, or calls to its drawing functions, each
+    argument built as the cases build it (kinds: a function's parameters and their
+    kinds) or the value a call of the chapter's returned. RGBA bytes, white where
+    nothing was put."""
+    width, height = recipe["given"]["canvas"]["width"], recipe["given"]["canvas"]["height"]
+    pixels = bytearray(b"\xff" * (width * height * 4))
+
+    def put(x, y, color):
+        column, row = width // 2 + math.trunc(x), height // 2 - math.trunc(y) - 1
+        if 0 <= column < width and 0 <= row < height:
+            rgb = plain(color, [16])
+            rgb = [rgb[k] for k in "rgb"] if isinstance(rgb, dict) else rgb
+            at = (row * width + column) * 4
+            pixels[at:at + 3] = bytes(channel(number(each)) for each in rgb[:3])
+
+    given = decoded(recipe["given"])
+    given["canvas"]["PutPixel"] = put
+    chapter.place(given)
+
+    def theirs(name):
+        function = getattr(chapter.main, name, None)
+        if not callable(function):
+            raise NameError(f"{name} is not written yet")
+        return function
+
+    if "rays" in recipe:
+        rays = recipe["rays"]
+        trace, through = theirs("TraceRay"), theirs(rays["direction"])
+        origin = chapter.adapter.vector(rays["origin"])
+        depth = rays.get("recursion_depth")
+        for x in range(-width // 2, width // 2):
+            for y in range(-height // 2, height // 2):
+                D = through(x, y)
+                put(x, y, trace(origin, D, rays["t_min"], math.inf) if depth is None
+                    else trace(origin, D, rays["t_min"], math.inf, depth))
+            if x % 20 == 0:
+                progress((x + width / 2) / width)
+    else:
+        def call(name, args):
+            values = []
+            for parameter, kind in kinds.get(name, []):
+                value = args[parameter]
+                if isinstance(value, dict) and "call" in value:
+                    values.append(call(value["call"], value["args"]))
+                else:
+                    values.append(number(value) if kind == "number" else getattr(chapter.adapter, kind)(decoded(value)))
+            return theirs(name)(*values)
+        for name, args in recipe["calls"]:
+            call(name, args)
+    return bytes(pixels)
+
+
+# The chapter pages' runner (tools/site/python_worker.js runs this module in Pyodide, in a
+# Web Worker): no processes there, so a case runs in this one, and the page ends the
+# worker when one runs too long.
+page_chapter = None
+
+
+def page_load(code, file, functions, names):
+    """Loads the reader's code (text) as the module FILE; the chapter's account of
+    itself, or why it does not load, as JSON."""
+    global page_chapter
+    folder = "/home/pyodide/chapter"
+    os.makedirs(folder, exist_ok=True)
+    path = os.path.join(folder, os.path.basename(file))
+    with open(path, "w") as out:
+        out.write(code)
+    os.chdir(folder)
+    sys.argv = [os.path.basename(file)]
+    try:
+        main_module = load(path, "your code")
+    except LoadError as error:
+        return json.dumps({"load_error": str(error).replace(f"your code {path}", "your code")})
+    sys.modules.setdefault(main_module.__name__, main_module)
+    page_chapter = Chapter(main_module, folder, adapted(None, main_module), json.loads(names), json.loads(functions))
+    return json.dumps({"loaded": page_chapter.facts})
+
+
+def page_case(request):
+    """One case's answer, as JSON (never what it expects: the page judges)."""
+    try:
+        return encoded(run_case(json.loads(request), page_chapter))
+    except BaseException as error:  # the reader's code made this one fail: said, one line
+        return json.dumps({"raised": one_line(error)})
+
+
+def page_draw(recipe, kinds, progress):
+    return draw_figure(json.loads(recipe), page_chapter, json.loads(kinds), progress)
+
+
 # The loop: a case at a time, each in a child process forked from this one.
 
 def in_child(request, chapter, write_end):

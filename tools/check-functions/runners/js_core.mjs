@@ -1,0 +1,528 @@
+// The heart of the JavaScript runner, wherever the student's code runs: in a Node.js
+// process (js_runner.mjs, for the command line) or in a Web Worker of a chapter's page
+// (js_worker.mjs). What a chapter defines and reads, the case's data built and put where
+// it reads them, a case run and its answer made plain data. Nothing here judges: the
+// runner is never told what a case expects (tools/check-functions/core judges).
+// An environment gives the parser (acorn and acorn-globals, useParser) and, to each
+// ChapterBase, the function that evaluates code in the chapter's global scope.
+
+let acorn = null;
+let findGlobals = null;
+
+// The parser: acorn, and acorn-globals (which finds the global names a program reads).
+export function useParser(acornModule, findGlobalsFunction) {
+  acorn = acornModule;
+  findGlobals = findGlobalsFunction;
+}
+
+export const MAX_ITEMS = 200_000;  // numbers, strings and lists in one answer
+export const MAX_ANSWER = 4 << 20;  // characters of one answer
+const MAX_PIXELS = 100_000;  // PutPixel calls one case may make
+// The names a chapter finds in its global scope before it runs: not its own.
+const BUILTINS = new Set([...Object.getOwnPropertyNames(globalThis), "require", "module", "exports",
+  "__filename", "__dirname", "undefined", "arguments", "this", "window", "document", "Image",
+  "requestAnimationFrame", "alert", "self", "postMessage", "importScripts", "onmessage"]);
+
+export class LoadError extends Error {}
+
+// The names errors give the student's files, where they ran under another (a chapter
+// page runs the reader's code from a Blob's address): address -> name.
+const sourceNames = new Map();
+export function nameSource(address, name) {
+  sourceNames.set(address, name);
+}
+
+// An error in one line, at the last line of the student's code it went through (a stack
+// line that names none of `ours`).
+export function oneLine(error, ours = []) {
+  for (const [address, name] of sourceNames) {
+    if (error && typeof error === "object" && typeof error.stack === "string") error.stack = error.stack.replaceAll(address, name);
+  }
+  if (!(error instanceof Error) && !(error && typeof error === "object" && "stack" in error)) {
+    return `${typeof error} ${String(error).slice(0, 200)}`;
+  }
+  const line = String(error.stack ?? "").split("\n").find((each) => /:\d+:\d+\)?$/.test(each) &&
+    !ours.some((dir) => each.includes(dir)) && !each.includes("node:"));
+  const place = line ? ` (at ${line.replace(/^.*\(|^\s*at /g, "").replace(/:\d+\)?$/, "").replace(/^.*\//, "")})` : "";
+  return `${error.name}: ${String(error.message).split("\n")[0]}${place}`;
+}
+
+export function syntaxError(error, filename, lineOffset) {
+  const line = (error.loc?.line ?? 0) + lineOffset;
+  return new LoadError(`SyntaxError: ${error.message.replace(/ \(\d+:\d+\)$/, "")} (at ${filename.replace(/^.*\//, "")}:${line})`);
+}
+
+// The top-level declarations of a script or module: name -> { kind, source }, kind one of
+// "function", "class", "data", "import".
+export function declarations(program, code) {
+  const found = new Map();
+  const declare = (pattern, kind, source) => {
+    if (!pattern) return;
+    if (pattern.type === "Identifier") found.set(pattern.name, { kind, source });
+    else if (pattern.type === "ObjectPattern") pattern.properties.forEach((p) => declare(p.value ?? p.argument, "data"));
+    else if (pattern.type === "ArrayPattern") pattern.elements.forEach((p) => declare(p, "data"));
+    else if (pattern.type === "AssignmentPattern") declare(pattern.left, kind, source);
+    else if (pattern.type === "RestElement") declare(pattern.argument, "data");
+  };
+  const text = (node) => code.slice(node.start, node.end);
+  for (let node of program.body) {
+    if (node.type === "ExportNamedDeclaration" || node.type === "ExportDefaultDeclaration") node = node.declaration ?? node;
+    if (node.type === "FunctionDeclaration") declare(node.id, "function", text(node));
+    else if (node.type === "ClassDeclaration") declare(node.id, "class");
+    else if (node.type === "ImportDeclaration") node.specifiers.forEach((s) => declare(s.local, "import"));
+    else if (node.type === "VariableDeclaration") {
+      for (const each of node.declarations) {
+        const init = each.init;
+        const isFunction = init && /^(FunctionExpression|ArrowFunctionExpression)$/.test(init.type);
+        const isRequire = init?.type === "CallExpression" || init?.type === "MemberExpression";
+        declare(each.id, isFunction ? "function" : init?.type === "ClassExpression" ? "class" : isRequire ? "import" : "data",
+          isFunction ? text(init) : undefined);
+      }
+    }
+  }
+  return found;
+}
+
+// A script's top-level `const`s made `let` (the same length, so that lines and columns
+// stay), so that the checker can set them before each case.
+export function constsMadeLet(program, code) {
+  let result = code;
+  for (const node of program.body) {
+    if (node.type === "VariableDeclaration" && node.kind === "const") {
+      result = result.slice(0, node.start) + "let  " + result.slice(node.start + 5);
+    }
+  }
+  return result;
+}
+
+export const parse = (code, sourceType) => acorn.parse(code, { ecmaVersion: "latest", sourceType, allowHashBang: true });
+
+// The chapter as loaded: its kind ("script": plain scripts, CommonJS files, a page's
+// scripts, every top-level name in reach; "module": an ES module, only its exports), its
+// declarations, and what it exports. `evaluate` runs code in the chapter's global scope.
+export class ChapterBase {
+  constructor(file, evaluate) {
+    Object.assign(this, { file, evaluate, declared: new Map(), kind: "script", exports: {} });
+  }
+
+  // A script's declarations, once it has run (or before: they are hoisted).
+  declare(program, code) {
+    for (const [name, each] of declarations(program, code)) this.declared.set(name, each);
+  }
+
+  // What a name holds now: a top-level binding of a script, or an export or global.
+  value(name) {
+    if (this.kind === "script") {
+      try {
+        return this.evaluate(`typeof ${name} === "undefined" ? undefined : ${name}`);
+      } catch {
+        return undefined;  // a \`let\` read before its line ran
+      }
+    }
+    return name in this.exports ? this.exports[name] : globalThis[name];
+  }
+
+  assign(name, value) {
+    globalThis.__cgfsValue = value;
+    try {
+      if (this.kind === "script") this.evaluate(`${name} = globalThis.__cgfsValue`);
+      else globalThis[name] = value;
+    } finally {
+      delete globalThis.__cgfsValue;
+    }
+  }
+
+  // What a student's adapter gets as the chapter: an ES module's exports; for a script,
+  // its exports and top-level names, module.Cw = 600 setting its Cw.
+  asModule() {
+    if (this.kind === "module") return this.exports;
+    return new Proxy({}, {
+      get: (_, name) => (typeof name !== "string" ? undefined : name in this.exports ? this.exports[name] : this.value(name)),
+      has: (_, name) => typeof name === "string" && (name in this.exports || this.value(name) !== undefined),
+      set: (_, name, value) => {
+        if (typeof name !== "string") return true;
+        if (/^[A-Za-z_$][\w$]*$/.test(name)) this.assign(name, value);
+        if (name in this.exports) this.exports[name] = value;
+        return true;
+      },
+    });
+  }
+}
+
+// ---- What the checker is told ---------------------------------------------------------
+
+function functionNode(source) {
+  for (const wrapped of [source, `(${source})`, `({${source}})`]) {
+    try {
+      const program = parse(wrapped, "script");
+      let node = program.body[0];
+      if (node?.type === "ExpressionStatement") node = node.expression;
+      if (node?.type === "ObjectExpression") node = node.properties[0]?.value;
+      if (node && /Function/.test(node.type)) return { node, program };
+    } catch {
+      // the next wrapping
+    }
+  }
+  return null;
+}
+
+function parametersOf(node) {
+  const names = [];
+  let required = 0, optional = false, more = false;
+  for (const param of node.params) {
+    if (param.type === "RestElement") { more = true; continue; }
+    if (param.type === "AssignmentPattern") optional = true;
+    if (!optional) required += 1;
+    names.push(param.type === "Identifier" ? param.name : param.left?.name ?? "…");
+  }
+  return { names, required, more };
+}
+
+// The top-level names a function reads, through the functions of the chapter it calls:
+// { reads: [[name, "", "data" | "missing"]...], complete }.
+function readsOf(chapter, source, names, wanted) {
+  const reads = new Map();
+  const calls = new Set();
+  let complete = true;
+  const seen = new Set();
+  const stack = [source];
+  while (stack.length > 0) {
+    const current = stack.pop();
+    if (seen.has(current)) continue;
+    seen.add(current);
+    const parsed = functionNode(current);
+    if (!parsed) { complete = false; continue; }
+    for (const { name } of findGlobals(parsed.program)) {
+      const declared = chapter.declared.get(name);
+      const value = chapter.value(name);
+      if (name in names) {  // the checker sets it: read, never followed
+        reads.set(name, value === undefined ? "missing" : "data");
+        continue;
+      }
+      if (declared?.kind === "function") {
+        stack.push(declared.source);
+        if (wanted.includes(name) && declared.source !== source) calls.add(name);
+        continue;
+      }
+      if (declared?.kind === "class" || (!declared && BUILTINS.has(name))) continue;
+      if (declared?.kind === "import") { complete = false; continue; }  // another file's: not followed
+      if (typeof value === "function") {
+        // A function from elsewhere (required, imported, made by a call): not followed.
+        if (!/\[native code\]/.test(value.toString())) complete = false;
+        continue;
+      }
+      // A name the chapter declares is its own data, reachable or not (an ES module's).
+      reads.set(name, value === undefined && declared?.kind !== "data" ? "missing" : "data");
+    }
+  }
+  return { reads: [...reads].sort().map(([name, kind]) => [name, "", kind]), complete, calls: [...calls].sort() };
+}
+
+function describe(value) {
+  if (value === null || value === undefined || typeof value === "boolean") return String(value);
+  if (typeof value === "number") return String(value);
+  if (Array.isArray(value)) return `an array of ${value.length}`;
+  return `a ${typeof value === "object" ? value.constructor?.name ?? "object" : typeof value}`;
+}
+
+export function factsOf(chapter, wanted, names) {
+  const functions = {};
+  for (const name of wanted) {
+    const fn = chapter.value(name);
+    if (typeof fn !== "function") continue;
+    const parsed = functionNode(fn.toString());
+    functions[name] = { parameters: parsed ? parametersOf(parsed.node) : null, reads: null, complete: false, bound: [], calls: [] };
+    if (parsed) Object.assign(functions[name], readsOf(chapter, fn.toString(), names, wanted));
+  }
+  const data = {};
+  for (const [name, each] of chapter.declared) {
+    if (each.kind === "data") data[name] = describe(chapter.value(name));
+  }
+  // The chapter's own types, with what their constructors take (for an adapter's
+  // vector(value) and color(value)).
+  const classes = {};
+  for (const [name, each] of chapter.declared) {
+    const value = chapter.value(name);
+    if ((each.kind === "class" || (each.kind === "function" && /^[A-Z]/.test(name))) && typeof value === "function") {
+      const source = value.toString();
+      const constructor = /^class\b/.test(source) ? /constructor\s*\(([^)]*)\)/.exec(source)?.[1] ?? ""
+        : /^function\s*\w*\s*\(([^)]*)\)/.exec(source)?.[1] ?? "";
+      classes[name] = constructor.split(",").map((p) => p.trim().split(/[\s=]/)[0]).filter(Boolean);
+    }
+  }
+  return { functions, data, defined: [...chapter.declared.keys(), ...Object.keys(chapter.exports)],
+    reachable: chapter.kind === "script" ? "all" : "exports", classes };
+}
+
+// ---- Building a case's data -----------------------------------------------------------
+
+const number = (value) => (value === "inf" ? Infinity : value === "-inf" ? -Infinity : Number(value));
+const numbers = (value) => Array.from(value, number);
+
+export function decoded(value) {
+  if (value === "inf" || value === "-inf") return number(value);
+  if (Array.isArray(value)) return value.map(decoded);
+  if (value && typeof value === "object") return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, decoded(v)]));
+  return value;
+}
+
+const at = (given, dotted) => dotted.split(".").reduce((value, key) => (value && typeof value === "object" ? value[key] : undefined), given);
+
+// The chapter's own helpers, where it has them, so that a chapter in the demos' style
+// gets its own Vec, Color and Pt (with their methods): each used only when what it
+// makes holds the values it was given.
+export function helpers(chapter) {
+  const made = (names, check) => {
+    for (const name of names) {
+      const make = chapter.value(name);
+      if (typeof make !== "function") continue;
+      return (...values) => {
+        let made_;
+        try {
+          made_ = new make(...values);
+        } catch {
+          return null;
+        }
+        return made_ && check(made_, values) ? made_ : null;
+      };
+    }
+    return () => null;
+  };
+  const xyz = (v, [x, y, z]) => v.x === x && v.y === y && v.z === z;
+  const rgb = (c, [r, g, b]) => (c.r === r && c.g === g && c.b === b) || (c[0] === r && c[1] === g && c[2] === b);
+  const light = chapter.value("Light");
+  return {
+    vector: made(["Vec", "Vec3", "Vector", "Vector3", "Vertex"], xyz),
+    color: made(["Color"], rgb),
+    point: made(["Pt", "Point"], (p, [x, y]) => p.x === x && p.y === y),
+    matrix: made(["Mat4x4"], (m, [rows]) => Array.isArray(m.data) && m.data[0]?.[0] === rows[0][0]),
+    sphere: made(["Sphere"], (s, [center, radius]) => s.center === center && s.radius === radius),
+    lightTypes: light && "AMBIENT" in light ? { field: "ltype", value: (type) => light[type.toUpperCase()], vector: "position" }
+      : chapter.value("LT_AMBIENT") !== undefined
+        ? { field: "type", value: (type) => chapter.value(`LT_${type.toUpperCase()}`), vector: "vector" } : null,
+  };
+}
+
+// How the book's data reach the chapter, unless its adapter says otherwise: vectors and
+// colours as arrays (or the chapter's Vec and Color), spheres, lights and scenes as plain
+// objects with the book's fields (or the demos', for a chapter in their style).
+export function defaultAdapter(made) {
+  return {
+    vector: (value) => made.vector(...numbers(value)) ?? numbers(value),
+    point: ([x, y, h = 1]) => made.point(number(x), number(y), number(h)) ?? { x: number(x), y: number(y), h: number(h) },
+    color: (value) => made.color(...numbers(value)) ?? numbers(value),
+    matrix: (rows) => made.matrix(rows.map(numbers)) ?? rows.map(numbers),
+    rows: (rows) => rows.map(numbers),
+    vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
+    plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
+    booleans: (value) => value.map(Boolean),
+    tangent_basis: (value, adapter) => ({ T: adapter.vector(value.T, adapter), B: adapter.vector(value.B, adapter) }),
+    triangle: (value, adapter) => ({ v: [...value.v], color: adapter.color(value.color, adapter) }),
+    model: (value, adapter) => ({ vertices: adapter.vectors(value.vertices, adapter),
+      triangles: value.triangles.map((each) => adapter.triangle(each, adapter)) }),
+    // texture[i][j]: the texel in column i, row j (rows from the top).
+    texture(value, adapter) {
+      const { width, height } = value;
+      const columns = Array.from({ length: width }, (_, i) =>
+        Array.from({ length: height }, (_, j) => adapter.color(value.texels[j * width + i], adapter)));
+      return Object.assign(columns, { width, height });
+    },
+    transform: (value, adapter) => ({ scale: number(value.scale), rotation: adapter.matrix(value.rotation, adapter),
+      translation: adapter.vector(value.translation, adapter) }),
+    // A sphere: the chapter's own Sphere(center, radius, color, specular, reflective),
+    // the demos' order, where it has one that keeps them; else a plain object.
+    sphere(value, adapter) {
+      const fields = [adapter.vector(value.center, adapter), number(value.radius), adapter.color(value.color, adapter),
+        number(value.specular ?? -1), number(value.reflective ?? 0)];
+      return made.sphere(...fields) ?? { center: fields[0], radius: fields[1], color: fields[2],
+        specular: fields[3], reflective: fields[4] };
+    },
+    // A light with its type's fields only (an ambient light has no position or direction),
+    // or as the demos make it: Light.POINT in ltype and the direction in position.
+    light(value, adapter) {
+      const where = value.position ?? value.direction;
+      if (made.lightTypes) {
+        const light = { [made.lightTypes.field]: made.lightTypes.value(value.type), intensity: number(value.intensity) };
+        if (where) light[made.lightTypes.vector] = adapter.vector(where, adapter);
+        return light;
+      }
+      const light = { type: value.type, intensity: number(value.intensity) };
+      for (const field of ["position", "direction"]) if (value[field]) light[field] = adapter.vector(value[field], adapter);
+      return light;
+    },
+    spheres: (value, adapter) => value.map((each) => adapter.sphere(each, adapter)),
+    lights: (value, adapter) => value.map((each) => adapter.light(each, adapter)),
+    scene: (value, adapter) => ({ spheres: adapter.spheres(value.spheres ?? [], adapter),
+      lights: adapter.lights(value.lights ?? [], adapter),
+      background_color: adapter.color(value.background_color ?? [255, 255, 255], adapter) }),
+    camera: (value, adapter) => ({ position: adapter.vector(value.position, adapter), rotation: adapter.rows(value.rotation, adapter) }),
+    // Chapter 12's buffer, depth_buffer[x][y] with x and y from 0: 0 is 1/z infinitely far.
+    depth_buffer: (canvas) => Array.from({ length: canvas.width }, () => new Array(canvas.height).fill(0)),
+  };
+}
+
+// The names of the checker's table the case gives, set where the chapter reads them.
+function place(chapter, names, given, adapter, readNames) {
+  const placed = [];
+  for (const [name, spec] of Object.entries(names)) {
+    const value = at(given, spec.path);
+    if (value === undefined || value === null) continue;
+    if (spec.dialect !== "book" && !chapter.declared.has(name) && !readNames.has(name)) continue;
+    const kind = spec.kind ?? "number";
+    if (kind === "canvas") {
+      const canvas = chapter.value("canvas");
+      if (canvas && typeof canvas === "object") Object.assign(canvas, { width: value.width, height: value.height });
+      else chapter.assign(name, { width: value.width, height: value.height });
+    } else {
+      chapter.assign(name, kind === "number" ? number(value) : kind === "PutPixel" ? value
+        : kind === "depth_buffer" ? adapter.depth_buffer(given.canvas, adapter) : adapter[kind](value, adapter));
+    }
+    placed.push(name);
+  }
+  return placed;
+}
+
+// ---- A case ---------------------------------------------------------------------------
+
+// Answers as plain data: numbers, strings, lists and records of the fields a value has,
+// nothing of the student's types; infinities and NaN as the strings JSON lacks them for.
+const FIELDS = ["x", "y", "z", "w", "h", "r", "g", "b", "center", "radius", "v", "indexes", "data",
+  "triangles", "vertices", "color"];
+export function plain(value, budget, depth = 0) {
+  if (--budget.left < 0 || depth > 12) throw new RangeError("too large");
+  if (value === null || value === undefined) return null;
+  if (typeof value === "number") return Number.isFinite(value) ? value : Number.isNaN(value) ? "nan" : value > 0 ? "inf" : "-inf";
+  if (typeof value === "boolean") return value;
+  if (typeof value === "string") return value.slice(0, 200);
+  if (typeof value === "bigint") return Number(value);
+  if (typeof value !== "object") return `a ${typeof value}`;
+  if (Array.isArray(value) || ArrayBuffer.isView(value)) {
+    if (value.length > MAX_ITEMS) throw new RangeError("too large");
+    return Array.from(value, (each) => plain(each, budget, depth + 1));
+  }
+  const fields = {};
+  for (const key of Object.keys(value).slice(0, 1000)) {
+    if (typeof value[key] !== "function") fields[key] = plain(value[key], budget, depth + 1);
+  }
+  for (const key of FIELDS) {
+    if (!(key in fields) && key in value && typeof value[key] !== "function") fields[key] = plain(value[key], budget, depth + 1);
+  }
+  if (Object.keys(fields).length === 0 && typeof value[Symbol.iterator] === "function") {
+    const items = [];
+    for (const each of value) {
+      if (items.length >= MAX_ITEMS) throw new RangeError("too large");
+      items.push(plain(each, budget, depth + 1));
+    }
+    return items;
+  }
+  return fields;
+}
+
+// What the function made of one case: { returned, arguments, pixels, placed }, or
+// { raised } / { adapter_failed }.
+export function runCase(request, chapter, adapter, names, readNames, functionReads, ours = []) {
+  const given = decoded(request.given ?? {});
+  let pixels = null;
+  if (request.drawing) {
+    pixels = [];
+    given.canvas.PutPixel = (x, y, color) => {
+      if (pixels.length >= MAX_PIXELS) throw new RangeError(`more than ${MAX_PIXELS} PutPixel calls`);
+      pixels.push([x, y, color]);
+    };
+  }
+  let placed, calls;
+  try {
+    placed = place(chapter, names, given, adapter, readNames);
+    if (adapter.setup) placed.push(...setUpByAdapter(chapter, adapter, given, functionReads(request.function)));
+    calls = request.calls.map((call) => request.parameters.map(([name, kind, from]) => {
+      const value = decoded(from ? from.map((each) => call[each]) : call[name]);
+      return kind === "number" ? number(value) : adapter[kind](value, adapter);
+    }));
+  } catch (error) {
+    if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
+    return { adapter_failed: oneLine(error, ours) };
+  }
+  const fn = chapter.value(request.function);
+  let value, args = [];
+  try {
+    for (args of calls) value = fn(...args);
+  } catch (error) {
+    if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
+    return { raised: oneLine(error, ours), placed };
+  }
+  const answer = { placed, returned: value };
+  if (pixels) answer.pixels = pixels;
+  if (adapter.result) {
+    try {
+      answer.returned = adapter.result(request.returns, value, given, adapter);
+    } catch (error) {
+      return { adapter_failed: `your adapter's result: ${oneLine(error, ours)}` };
+    }
+  }
+  if (request.arguments) answer.arguments = args;
+  return plain(answer, { left: MAX_ITEMS });
+}
+
+// An adapter's setup, after the checker's names are set; the names the function reads
+// that it set.
+function setUpByAdapter(chapter, adapter, given, readNames) {
+  const fingerprint = (name) => {
+    const value = chapter.value(name);
+    return Array.isArray(value) ? [value, ...value] : value && typeof value === "object" ? [value, ...Object.values(value)] : [value];
+  };
+  const before = new Map([...readNames].map((name) => [name, fingerprint(name)]));
+  adapter.setup(chapter.asModule(), given, adapter);
+  return [...readNames].filter((name) => {
+    const now = fingerprint(name), then = before.get(name);
+    return now.length !== then.length || now.some((each, i) => each !== then[i]);
+  });
+}
+
+// ---- A figure drawn with the chapter's own functions (a chapter page's Draw) --------
+
+// A colour channel as a canvas keeps it: clamped to 0..255, rounded half up.
+const channel = (value) => (!(value > 0) ? 0 : value >= 255 ? 255 : Math.floor(value + 0.5));
+
+// Draws a figure (tools/site/drawings.json) with the chapter's functions: its canvas,
+// viewport and scene put where the chapter reads them, as a case's are, then a ray per
+// pixel through the chapter's TraceRay, or calls to its drawing functions, each argument
+// built as the cases build it (`kinds`: a function's parameters and their kinds) or the
+// value a call of the chapter's returned. RGBA pixels, white where nothing was put.
+export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, progress = () => {}) {
+  const { width, height } = recipe.given.canvas;
+  const pixels = new Uint8ClampedArray(width * height * 4).fill(255);
+  const put = (x, y, color) => {
+    const [column, row] = [Math.floor(width / 2) + Math.trunc(x), Math.floor(height / 2) - Math.trunc(y) - 1];
+    if (!(column >= 0 && column < width && row >= 0 && row < height)) return;
+    const rgb = Array.isArray(color) || ArrayBuffer.isView(color) ? color : [color?.r, color?.g, color?.b];
+    pixels.set([channel(rgb[0]), channel(rgb[1]), channel(rgb[2]), 255], (row * width + column) * 4);
+  };
+  const given = decoded(recipe.given);
+  given.canvas = { ...given.canvas, PutPixel: put };
+  place(chapter, names, given, adapter, readNames);
+  const theirs = (name) => {
+    const fn = chapter.value(name);
+    if (typeof fn !== "function") throw new Error(`${name} is not written yet`);
+    return fn;
+  };
+  if (recipe.rays) {
+    const { origin, direction, t_min: tMin, recursion_depth: depth } = recipe.rays;
+    const [trace, through] = [theirs("TraceRay"), theirs(direction)];
+    const O = adapter.vector(origin, adapter);
+    for (let x = -Math.floor(width / 2); x < Math.ceil(width / 2); ++x) {
+      for (let y = -Math.floor(height / 2); y < Math.ceil(height / 2); ++y) {
+        const D = through(x, y);
+        put(x, y, depth === undefined ? trace(O, D, tMin, Infinity) : trace(O, D, tMin, Infinity, depth));
+      }
+      if (x % 20 === 0) progress((x + width / 2) / width);
+    }
+  } else {
+    const call = (name, args) => theirs(name)(...(kinds[name] ?? []).map(([parameter, kind]) => {
+      const value = args[parameter];
+      if (value && typeof value === "object" && "call" in value) return call(value.call, value.args);
+      return kind === "number" ? number(value) : adapter[kind](decoded(value), adapter);
+    }));
+    for (const [name, args] of recipe.calls) call(name, args);
+  }
+  return { pixels, width, height };
+}
