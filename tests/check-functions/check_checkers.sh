@@ -109,6 +109,15 @@ sed -e 's|y \* Vh / Ch|y * Vh / Cw|' \
 run 02 "$student/basic-rays.js" --time-limit 0.5
 mistakes_reported "threw RangeError" basic-rays.js
 
+echo "== a function with nothing in its body yet, as a chapter page's starter leaves it, is not written yet"
+printf 'def CanvasToViewport(x, y):\n    pass\n\n\ndef IntersectRaySphere(O, D, sphere):\n    """Listing 2-3."""\n' >"$work/starter.py"
+printf 'function CanvasToViewport(x, y) {\n}\nconst IntersectRaySphere = (O, D, sphere) => {};\n' >"$work/starter.js"
+for file in "$work/starter.js" $([ $have_python -eq 0 ] || echo "$work/starter.py"); do
+  run 02 "$file"
+  check "$(basename "$file"): each empty function is not written yet" \
+    test "$(grep -cE "^  (CanvasToViewport|IntersectRaySphere) +not written yet \(5 cases\)" "$work/out.txt")" -eq 2
+done
+
 echo "== bad input: one line each"
 echo 'throw new Error("at load")' >"$work/broken.js"
 printf 'function CanvasToViewport(x, y) {\n  return [x,, y;\n}\n' >"$work/syntax.js"
@@ -188,16 +197,22 @@ check "Listing 3-1's ComputeLighting(P, N) is checked on the matte cases, and to
   says "^  ComputeLighting +passed \(4 of 7 cases\)" 
 check "(the line naming both signatures)" says "only its cases for ComputeLighting\(P, N\) \(Listing 3-1, \"Diffuse Reflection\"\): the other 3 call ComputeLighting\(P, N, V, s\)"
 
-echo "== every chapter so far: chapter 3 with chapter 2's roots swapped"
+echo "== every chapter so far: chapter 3 with chapter 2's roots swapped, in a file it imports"
 for language in "${languages[@]}"; do
   swapped=$work/swapped-$language
   mkdir -p "$swapped"
-  cp "$reference/$language/"* "$swapped/"
+  # Chapter 2's file with its roots swapped, and chapter 3's without its own
+  # IntersectRaySphere: it imports chapter 2's.
   if [ "$language" = python ]; then
-    sed -i 's|    return t1, t2|    return t2, t1|' "$swapped/basic_rays.py"
+    sed 's|    return t1, t2|    return t2, t1|' "$reference/python/basic_rays.py" >"$swapped/basic_rays.py"
+    awk '/^# Listing 2-3/ {next} /^def IntersectRaySphere/ {skip=1; next} skip && /^[^ \t]/ {skip=0} !skip' \
+      "$reference/python/light.py" | sed 's|^import math$|import math\n\nfrom basic_rays import IntersectRaySphere|' >"$swapped/light.py"
     file=$swapped/light.py
   else
-    sed -i 's|  return \[t1, t2\];|  return [t2, t1];|' "$swapped/basic-rays.js"
+    { sed 's|  return \[t1, t2\];|  return [t2, t1];|' "$reference/js/basic-rays.js"
+      echo 'module.exports = { IntersectRaySphere };'; } >"$swapped/basic-rays.js"
+    awk '/^\/\/ Listing 2-3/ {next} /^function IntersectRaySphere/ {skip=1; next} skip && /^}/ {skip=0; next} !skip' \
+      "$reference/js/light.js" | sed 's|^"use strict";$|&\nconst { IntersectRaySphere } = require("./basic-rays.js");|' >"$swapped/light.js"
     file=$swapped/light.js
   fi
   run 03 "$file"

@@ -143,6 +143,10 @@ with blocks "  if (x === 300) require(\"child_process\").execSync(\"sleep 30\");
 with forges "  require(\"fs\").writeSync(4, JSON.stringify({ id: 2, nonce: \"x\", returned: [0, 0, 1] }) + \"\\\\n\");\n  try { require(\"fs\").appendFileSync(\"$source_dir/tests/cases/02-basic-rays.json\", \"{}\"); } catch {}\n  return [9, 9, 9];"
 { printf 'require("fs").writeSync(4, JSON.stringify({ loaded: { functions: {}, data: {}, defined: [], reachable: "all" } }) + "\\n");\n'
   cat "$work/forges.js"; } >"$work/forges-account.js"
+# Its account says its functions are still empty (not written yet: no case would run).
+{ printf 'const told = (names) => ({ parameters: { names, required: names.length, more: false }, empty: true, reads: [], complete: true, bound: [], calls: [] });\n'
+  printf 'require("fs").writeSync(4, JSON.stringify({ loaded: { functions: { CanvasToViewport: told(["x", "y"]), IntersectRaySphere: told(["O", "D", "sphere"]), TraceRay: told(["O", "D", "t_min", "t_max"]) }, data: {}, defined: [], reachable: "all" } }) + "\\n");\n'
+  cat "$work/forges.js"; } >"$work/forges-empty.js"
 with tampers "  Math.abs = () => 0; JSON.stringify = () => '{\"returned\": [0.5, -0.25, 1]}'; return [9, 9, 9];"
 run 02 "$work/blocks.js" --time-limit 1
 fails_within "a blocking child process, Atomics.wait, a grandchild and SIGSTOP above, a memory bomb" 30
@@ -152,6 +156,10 @@ fails_within "answers forged into the answer pipe, a case file appended to" 15
 run 02 "$work/forges-account.js" --time-limit 1
 fails_within "the process's account of itself forged" 15
 check "the functions it hid are named as hidden" says "your file defines CanvasToViewport, but the process it ran in said it does not"
+run 02 "$work/forges-empty.js" --time-limit 1
+fails_within "the process's account forged to say every function is still empty" 15
+check "its written functions are not taken for unwritten ones" bash -c '! grep -q "not written yet" "$1"' _ "$work/out.txt"
+check "(they run their cases, and CanvasToViewport fails them)" says "^  CanvasToViewport +FAILED"
 run 02 "$work/tampers.js" --time-limit 1
 fails_within "JSON.stringify and Math replaced" 15
 

@@ -20,7 +20,7 @@ const crypto = require("crypto");
 const fs = require("fs");
 const path = require("path");
 const sandbox = require("./sandbox.js");
-const { definedFunctions, heldAgainstFile } = require("./source_facts.js");
+const { definedFunctions } = require("./source_facts.js");
 
 const ROOT = path.resolve(__dirname, "..", "..");
 const CASES_DIR = path.join(ROOT, "tests", "cases");
@@ -205,7 +205,8 @@ class ProcessRunner {
       fail(`your module ${this.options.module} does not load: it said something else while loading`);
     }
     // The process's account of the file, held against what the file says of itself.
-    const defined = definedFunctions(path.resolve(this.options.module), this.language, {
+    const { heldAgainstFile } = await import("./core/account.mjs");
+    const defined = await definedFunctions(path.resolve(this.options.module), this.language, {
       python: sandbox.pythonInterpreter()?.executable, nodePath: this.language === "python" ? "" : nodePath() });
     return heldAgainstFile(facts, defined, functions);
   }

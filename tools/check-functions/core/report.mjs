@@ -15,6 +15,7 @@ import { casesFor, functionsOf, sections, signatureFor } from "./plan.mjs";
 export class CheckError extends Error {}
 
 const code = (names) => listed(names.map((name) => `\`${name}\``));
+const casesOf = (count) => `${count} ${count === 1 ? "case" : "cases"}`;
 function listed(items) {
   if (items.length <= 1) return items.join("");
   return `${items.slice(0, -1).join(", ")} and ${items.at(-1)}`;
@@ -141,13 +142,13 @@ async function checkFunction(entry, fact, context) {
   const { runner, facts, file, caseFile, options } = context;
   const name = entry.function.padEnd(22);
   if (fact.forged) {  // the process's account of the file is not the file's
-    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${entry.cases.length} cases`, `    ${fact.forged}`] };
+    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${casesOf(entry.cases.length)}`, `    ${fact.forged}`] };
   }
   const signature = signatureFor(entry, fact.parameters);
   if (!signature) {
     const takes = `takes ${fact.parameters.names.length} parameters (${fact.parameters.names.join(", ")})`;
     const calls = [entry, ...(entry.signatures ?? [])].map((each) => `${each.call} (${each.where})`).join(" or ");
-    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${entry.cases.length} cases`,
+    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${casesOf(entry.cases.length)}`,
       `    ${entry.function} ${takes}; the checker calls ${calls}`] };
   }
   const cases = casesFor(entry, signature);
@@ -171,7 +172,7 @@ async function checkFunction(entry, fact, context) {
   } else if (signature.call !== entry.call) {
     partial.push(`    called as ${signature.call} (${signature.where})`);
   }
-  const count = cases.length < entry.cases.length ? `${cases.length} of ${entry.cases.length} cases` : `${cases.length} cases`;
+  const count = cases.length < entry.cases.length ? `${cases.length} of ${casesOf(entry.cases.length)}` : casesOf(cases.length);
   if (failures.length === 0) return { failed: false, lines: [`  ${name} passed (${count})`, ...partial] };
   lines.push(`  ${name} FAILED ${failures.length} of ${count}`, ...partial);
   // A bound default explains itself: the names a function reads come after it is fixed.
@@ -224,9 +225,10 @@ export async function check({ chapter, files, runner, file, adapterGiven = false
       said.add(name);
     }
     for (const entry of section.entries) {
-      const fact = facts.functions[entry.function];
+      // A function with an empty body (a page's starter) is not written yet either.
+      const fact = facts.functions[entry.function]?.empty ? undefined : facts.functions[entry.function];
       if (stopped || !fact) {
-        if (section.own && !fact) block.results.push({ lines: [`  ${entry.function.padEnd(22)} not written yet (${entry.cases.length} cases)`] });
+        if (section.own && !fact) block.results.push({ lines: [`  ${entry.function.padEnd(22)} not written yet (${casesOf(entry.cases.length)})`] });
         continue;
       }
       if (!section.own && !fact.forged && !signatureFor(entry, fact.parameters)) {

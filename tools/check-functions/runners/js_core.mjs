@@ -83,6 +83,29 @@ export function declarations(program, code) {
   return found;
 }
 
+// The functions a script or module defines at its top level, read from its syntax tree
+// before any of it runs: name -> { count, required, more, empty } (empty: a body with
+// nothing in it, as a page's starter leaves it: not written yet).
+export function declaredFunctions(program) {
+  const found = new Map();
+  const describe = (node) => {
+    const { names, required, more } = parametersOf(node);
+    const empty = node.body.type === "BlockStatement" && node.body.body.length === 0;
+    return { count: names.length, required, more, empty };
+  };
+  for (let node of program.body) {
+    if (node.type === "ExportNamedDeclaration" && node.declaration) node = node.declaration;
+    if (node.type === "FunctionDeclaration" && node.id) found.set(node.id.name, describe(node));
+    if (node.type !== "VariableDeclaration") continue;
+    for (const each of node.declarations) {
+      if (each.id.type === "Identifier" && /^(FunctionExpression|ArrowFunctionExpression)$/.test(each.init?.type)) {
+        found.set(each.id.name, describe(each.init));
+      }
+    }
+  }
+  return found;
+}
+
 // A script's top-level `const`s made `let` (the same length, so that lines and columns
 // stay), so that the checker can set them before each case.
 export function constsMadeLet(program, code) {
@@ -231,7 +254,8 @@ export function factsOf(chapter, wanted, names) {
     const fn = chapter.value(name);
     if (typeof fn !== "function") continue;
     const parsed = functionNode(fn.toString());
-    functions[name] = { parameters: parsed ? parametersOf(parsed.node) : null, reads: null, complete: false, bound: [], calls: [] };
+    functions[name] = { parameters: parsed ? parametersOf(parsed.node) : null, reads: null, complete: false, bound: [], calls: [],
+      empty: parsed?.node.body.type === "BlockStatement" && parsed.node.body.body.length === 0 };
     if (parsed) Object.assign(functions[name], readsOf(chapter, fn.toString(), names, wanted));
   }
   const data = {};

@@ -356,6 +356,39 @@ def bound_defaults(function):
     return bound
 
 
+def is_empty(definition):
+    """Whether a def's body has nothing in it but `pass`, `...` or a docstring, as a
+    page's starter leaves it: not written yet."""
+    return all(isinstance(statement, ast.Pass) or (
+        isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
+        and (isinstance(statement.value.value, str) or statement.value.value is Ellipsis))
+        for statement in definition.body)
+
+
+def declared_functions(source):
+    """The functions a module's source defines at its top level, read before any of it
+    runs: name -> {count, required, more, empty} (core/account.mjs holds the runner's
+    account against it)."""
+    found = {}
+    for node in ast.parse(source).body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            a = node.args
+            positional = len(a.posonlyargs) + len(a.args)
+            found[node.name] = {"count": positional, "required": positional - len(a.defaults),
+                                "more": a.vararg is not None, "empty": is_empty(node)}
+    return found
+
+
+def empty_body(function):
+    """Whether a function of the chapter is still empty (is_empty on its own source)."""
+    try:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(function)))
+    except (OSError, TypeError, SyntaxError):
+        return False
+    return bool(tree.body) and isinstance(tree.body[0], (ast.FunctionDef, ast.AsyncFunctionDef)) \
+        and is_empty(tree.body[0])
+
+
 def parameters(function):
     """The names of the positional parameters, and how many have no default."""
     try:
@@ -390,6 +423,7 @@ def facts(main, wanted, folder, names):
         if isinstance(function, types.FunctionType):
             fact.update(global_reads(function, main, folder, names, wanted))
             fact["bound"] = bound_defaults(function)
+            fact["empty"] = empty_body(function)
         functions[name] = fact
     data = {name: described(value) for name, value in vars(main).items()
             if not name.startswith("__") and not callable(value)
@@ -851,6 +885,10 @@ def exit_text(status):
 
 
 def main():
+    if sys.argv[1:2] == ["--declared"]:  # the file's own account, for the checker: nothing of it runs
+        with open(sys.argv[2], encoding="utf-8", errors="replace") as source:
+            print(json.dumps(declared_functions(source.read())))
+        return
     requests = os.fdopen(3, "rb")
     answers = os.fdopen(4, "wb")
 

@@ -1,8 +1,9 @@
 // cases: 02 (tests/cases/02-basic-rays.json)
 // Chapter 2, "Basic Raytracing", in plain JavaScript, as the book writes it: the
-// checker's reference (tools/check-functions). Vectors are a small class of its own,
-// and the book's globals are the script's top-level names, which the checker sets before
-// each case (and builds the cases' vectors with Vec3: it has x, y and z).
+// checker's reference (tools/check-functions), one script as a reader writes it on a
+// chapter's page. Vectors are a small class of its own, and the book's globals are the
+// script's top-level names, which the checker sets before each case (and builds the
+// cases' vectors with Vec3: it has x, y and z).
 "use strict";
 
 class Vec3 {
@@ -55,5 +56,3 @@ function TraceRay(O, D, t_min, t_max) {
   }
   return closest_sphere === null ? scene.background_color : closest_sphere.color;
 }
-
-module.exports = { Vec3, CanvasToViewport, IntersectRaySphere, TraceRay };

@@ -1,23 +1,43 @@
 // cases: 07 (tests/cases/07-filled-triangles.json)
 // Chapter 7, "Filled Triangles", in plain JavaScript, as the book writes it: the
-// checker's reference (tools/check-functions). DrawWireframeTriangle and
-// DrawFilledTriangle (Listing 7-1), drawing with the canvas configure() gives.
+// checker's reference (tools/check-functions), one script as a reader writes it on a
+// chapter's page. Chapter 6's script carried forward, with DrawWireframeTriangle and
+// DrawFilledTriangle (Listing 7-1).
 "use strict";
 
-const lines = require("./lines.js");
-const { Interpolate } = lines;
+let Cw = 600, Ch = 600;  // the canvas
+let PutPixel = () => { throw new Error("the canvas goes here"); };
 
-let PutPixel = () => { throw new Error("your canvas goes here"); };
+// Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+// book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+// (docs/conventions.md).
+function Interpolate(i0, d0, i1, d1) {
+  if (i0 === i1) return [d0];
+  const values = [];
+  const a = (d1 - d0) / (i1 - i0);
+  for (let i = i0; i <= i1; i++) values.push(d0 + a * (i - i0));
+  return values;
+}
 
-function configure(given) {
-  if (given.PutPixel) PutPixel = given.PutPixel;
-  lines.configure(given);
+// Listing 6-2: one pixel per step along the axis the line spans most.
+function DrawLine(P0, P1, color) {
+  if (Math.abs(P1.x - P0.x) > Math.abs(P1.y - P0.y)) {
+    // The line is horizontal-ish. Make sure x0 < x1
+    if (P0.x > P1.x) [P0, P1] = [P1, P0];
+    const ys = Interpolate(P0.x, P0.y, P1.x, P1.y);
+    for (let x = P0.x; x <= P1.x; x++) PutPixel(x, ys[x - P0.x], color);
+  } else {
+    // The line is vertical-ish. Make sure y0 < y1
+    if (P0.y > P1.y) [P0, P1] = [P1, P0];
+    const xs = Interpolate(P0.y, P0.x, P1.y, P1.x);
+    for (let y = P0.y; y <= P1.y; y++) PutPixel(xs[y - P0.y], y, color);
+  }
 }
 
 function DrawWireframeTriangle(P0, P1, P2, color) {
-  lines.DrawLine(P0, P1, color);
-  lines.DrawLine(P1, P2, color);
-  lines.DrawLine(P2, P0, color);
+  DrawLine(P0, P1, color);
+  DrawLine(P1, P2, color);
+  DrawLine(P2, P0, color);
 }
 
 // Listing 7-1: for each row, from the long side to the two short ones.
@@ -47,5 +67,3 @@ function DrawFilledTriangle(P0, P1, P2, color) {
     }
   }
 }
-
-module.exports = { configure, DrawWireframeTriangle, DrawFilledTriangle };

@@ -1,15 +1,53 @@
 // cases: 12 (tests/cases/12-hidden-surface-removal.json)
 // Chapter 12, "Hidden Surface Removal", in plain JavaScript, as the book writes it: the
-// checker's reference (tools/check-functions). The filled triangle with a depth test
-// before every PutPixel ("Depth Buffering", "Using 1/Z Instead of Z"), classifying a
-// triangle ("Classifying Triangles") and CullBackFaces (Listing 12-1), which keeps the
-// triangles that face the camera. The book's globals PutPixel, Cw, Ch and depth_buffer
-// (depth_buffer[x][y] from the screen's top-left corner, as PutPixel maps a canvas
-// point) are the ones the checker sets.
+// checker's reference (tools/check-functions), one script as a reader writes it on a
+// chapter's page. Chapter 11's script carried forward; DrawFilledTriangle now tests
+// depth before every PutPixel ("Depth Buffering", "Using 1/Z Instead of Z"), with
+// classifying a triangle ("Classifying Triangles") and CullBackFaces (Listing 12-1),
+// which keeps the triangles that face the camera. depth_buffer[x][y] counts from the
+// screen's top-left corner, as PutPixel maps a canvas point; the checker sets it, as it
+// sets PutPixel.
 "use strict";
 
-const { Interpolate } = require("./lines.js");
+let Cw = 600, Ch = 600;       // the canvas
+let Vw = 1, Vh = 1, d = 1;    // the viewport, at distance d
+let PutPixel = () => { throw new Error("the canvas goes here"); };
+let depth_buffer = [];  // depth_buffer[x][y]: 1/z of what is drawn there, 0 for nothing
 
+// Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+// book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+// (docs/conventions.md).
+function Interpolate(i0, d0, i1, d1) {
+  if (i0 === i1) return [d0];
+  const values = [];
+  const a = (d1 - d0) / (i1 - i0);
+  for (let i = i0; i <= i1; i++) values.push(d0 + a * (i - i0));
+  return values;
+}
+
+// Listing 6-2: one pixel per step along the axis the line spans most.
+function DrawLine(P0, P1, color) {
+  if (Math.abs(P1.x - P0.x) > Math.abs(P1.y - P0.y)) {
+    // The line is horizontal-ish. Make sure x0 < x1
+    if (P0.x > P1.x) [P0, P1] = [P1, P0];
+    const ys = Interpolate(P0.x, P0.y, P1.x, P1.y);
+    for (let x = P0.x; x <= P1.x; x++) PutPixel(x, ys[x - P0.x], color);
+  } else {
+    // The line is vertical-ish. Make sure y0 < y1
+    if (P0.y > P1.y) [P0, P1] = [P1, P0];
+    const xs = Interpolate(P0.y, P0.x, P1.y, P1.x);
+    for (let y = P0.y; y <= P1.y; y++) PutPixel(xs[y - P0.y], y, color);
+  }
+}
+
+function DrawWireframeTriangle(P0, P1, P2, color) {
+  DrawLine(P0, P1, color);
+  DrawLine(P1, P2, color);
+  DrawLine(P2, P0, color);
+}
+
+// The values of a quantity along a triangle's long side (y0 to y2) and its two short
+// ones (y0 to y1 to y2), as Listing 7-1 works out x.
 function EdgeInterpolate(y0, v0, y1, v1, y2, v2) {
   const v01 = Interpolate(y0, v0, y1, v1);
   const v12 = Interpolate(y1, v1, y2, v2);
@@ -18,6 +56,8 @@ function EdgeInterpolate(y0, v0, y1, v1, y2, v2) {
   return [v02, v01.concat(v12)];
 }
 
+// "Depth Buffering": Listing 7-1 with 1/z interpolated too, each pixel put only where it
+// is nearer than what the depth buffer holds.
 function DrawFilledTriangle(P0, P1, P2, z0, z1, z2, color) {
   // Sort the points so that y0 <= y1 <= y2; each depth goes with its point.
   if (P1.y < P0.y) [P0, P1, z0, z1] = [P1, P0, z1, z0];
@@ -40,19 +80,154 @@ function DrawFilledTriangle(P0, P1, P2, z0, z1, z2, color) {
   }
 }
 
-const Subtract = (a, b) => a.map((each, i) => each - b[i]);
-const Cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const Dot = (a, b) => a.reduce((sum, each, i) => sum + each * b[i], 0);
+// Listing 8-1: Listing 7-1 with h carried along.
+function DrawShadedTriangle(P0, P1, P2, color) {
+  // Sort the points so that y0 <= y1 <= y2
+  if (P1.y < P0.y) [P1, P0] = [P0, P1];
+  if (P2.y < P0.y) [P2, P0] = [P0, P2];
+  if (P2.y < P1.y) [P2, P1] = [P1, P2];
 
+  // Compute the x coordinates and h values of the triangle edges
+  const x01 = Interpolate(P0.y, P0.x, P1.y, P1.x);
+  const h01 = Interpolate(P0.y, P0.h, P1.y, P1.h);
+  const x12 = Interpolate(P1.y, P1.x, P2.y, P2.x);
+  const h12 = Interpolate(P1.y, P1.h, P2.y, P2.h);
+  const x02 = Interpolate(P0.y, P0.x, P2.y, P2.x);
+  const h02 = Interpolate(P0.y, P0.h, P2.y, P2.h);
+
+  // Concatenate the short sides
+  x01.pop();
+  const x012 = x01.concat(x12);
+  h01.pop();
+  const h012 = h01.concat(h12);
+
+  // Determine which is left and which is right
+  const m = Math.floor(x012.length / 2);
+  const [x_left, h_left, x_right, h_right] =
+    x02[m] < x012[m] ? [x02, h02, x012, h012] : [x012, h012, x02, h02];
+
+  // Draw the horizontal segments
+  for (let y = P0.y; y <= P2.y; y++) {
+    const x_l = Math.trunc(x_left[y - P0.y]);
+    const x_r = Math.trunc(x_right[y - P0.y]);
+    const h_segment = Interpolate(x_l, h_left[y - P0.y], x_r, h_right[y - P0.y]);
+    for (let x = x_l; x <= x_r; x++) {
+      PutPixel(x, y, color.map((channel) => channel * h_segment[x - x_l]));
+    }
+  }
+}
+
+// Listing 9-1: a viewport point to the canvas point it lands on.
+function ViewportToCanvas(x, y) {
+  return { x: x * Cw / Vw, y: y * Ch / Vh };
+}
+
+// Listing 9-1: a point of the scene (an array [x, y, z]) projected onto the canvas.
+function ProjectVertex(v) {
+  return ViewportToCanvas(v[0] * d / v[2], v[1] * d / v[2]);
+}
+
+function MakeTranslationMatrix([x, y, z]) {
+  return [[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, z], [0, 0, 0, 1]];
+}
+
+function MakeScalingMatrix(scale) {
+  return [[scale, 0, 0, 0], [0, scale, 0, 0], [0, 0, scale, 0], [0, 0, 0, 1]];
+}
+
+function MakeOYRotationMatrix(degrees) {
+  const cos = Math.cos(degrees * Math.PI / 180), sin = Math.sin(degrees * Math.PI / 180);
+  return [[cos, 0, -sin, 0], [0, 1, 0, 0], [sin, 0, cos, 0], [0, 0, 0, 1]];
+}
+
+const range4 = [0, 1, 2, 3];
+
+function MultiplyMM4(A, B) {
+  return range4.map((i) => range4.map((j) => range4.reduce((sum, k) => sum + A[i][k] * B[k][j], 0)));
+}
+
+function MultiplyMV(M, v) {
+  return range4.map((i) => range4.reduce((sum, k) => sum + M[i][k] * v[k], 0));
+}
+
+function Transposed(M) {
+  return range4.map((i) => range4.map((j) => M[j][i]));
+}
+
+// Listing 10-4: scale, then rotate, then translate.
+function ApplyTransform(vertex, transform) {
+  const scaled = [...vertex.map((each) => each * transform.scale), 1];
+  const rotated = MultiplyMV(transform.rotation, scaled);
+  return [0, 1, 2].map((i) => rotated[i] + transform.translation[i]);
+}
+
+// Listing 10-5: the camera's inverse rotation times its inverse translation.
+function MakeCameraMatrix(position, orientation) {
+  return MultiplyMM4(Transposed(orientation), MakeTranslationMatrix(position.map((each) => -each)));
+}
+
+function Dot(a, b) {
+  return a.reduce((sum, each, i) => sum + each * b[i], 0);
+}
+
+// Listing 11-4: how far a point is in front of a plane (behind it: negative).
+function SignedDistance(plane, vertex) {
+  return Dot(vertex, plane.normal) + plane.D;
+}
+
+// Where the segment from A to B crosses the plane.
+function Intersection(A, B, plane) {
+  const AB = B.map((each, i) => each - A[i]);
+  const t = (-plane.D - Dot(plane.normal, A)) / Dot(plane.normal, AB);
+  return A.map((each, i) => each + t * AB[i]);
+}
+
+// Listing 11-3: the parts of a triangle in front of a plane: none, itself, or one or two
+// new triangles, whose new vertices are added to the list.
+function ClipTriangle(triangle, plane, vertices) {
+  const inFront = triangle.v.map((i) => SignedDistance(plane, vertices[i]) >= 0);
+  const count = inFront.filter(Boolean).length;
+  if (count === 3) return [triangle];
+  if (count === 0) return [];
+  // Where the segment from vertex a to vertex b crosses the plane.
+  const NewVertex = (a, b) => vertices.push(Intersection(vertices[a], vertices[b], plane)) - 1;
+  // One in front: A is that one. Two: C is the one behind. The others follow in order.
+  const k = inFront.indexOf(count === 1);
+  const [first, second, third] = [0, 1, 2].map((n) => triangle.v[(k + n) % 3]);
+  const { color } = triangle;
+  if (count === 1) {
+    const [A, B, C] = [first, second, third];
+    return [{ v: [A, NewVertex(A, B), NewVertex(A, C)], color }];
+  }
+  const [C, A, B] = [first, second, third];
+  const APrime = NewVertex(A, C), BPrime = NewVertex(B, C);
+  return [{ v: [A, B, APrime], color }, { v: [APrime, B, BPrime], color }];
+}
+
+// "Clipping Whole Objects": the centre of the vertices, and the farthest one's distance.
+function ComputeBoundingSphere(vertices) {
+  const center = [0, 1, 2].map((i) => vertices.reduce((sum, v) => sum + v[i], 0) / vertices.length);
+  const radius = Math.max(...vertices.map((v) => Math.hypot(...v.map((each, i) => each - center[i]))));
+  return { center, radius };
+}
+
+function Subtract(a, b) {
+  return a.map((each, i) => each - b[i]);
+}
+
+function Cross(a, b) {
+  return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+}
+
+// "Classifying Triangles": the camera is behind the triangle's front face.
 function IsBackFacing(A, B, C, camera) {
   const N = Cross(Subtract(B, A), Subtract(C, A));
   const V = Subtract(camera, A);
   return Dot(N, V) <= 0;
 }
 
+// Listing 12-1: the object keeps the triangles that face the camera.
 function CullBackFaces(object, camera) {
   const V = object.vertices;
   object.triangles = object.triangles.filter((T) => !IsBackFacing(V[T.v[0]], V[T.v[1]], V[T.v[2]], camera));
 }
-
-module.exports = { DrawFilledTriangle, IsBackFacing, CullBackFaces };

@@ -1,15 +1,12 @@
 // cases: 06 (tests/cases/06-lines.json)
-// Chapter 6, "Lines", in plain JavaScript, as the book writes it: the runner's
-// reference (tools/check-functions). Interpolate (Listing 6-1) and DrawLine (Listing
-// 6-2), which draws with the module's PutPixel: the checker's when it checks this file,
-// and what configure() gives when another file requires it (filled-triangles.js).
+// Chapter 6, "Lines", in plain JavaScript, as the book writes it: the checker's
+// reference (tools/check-functions), one script as a reader writes it on a chapter's
+// page. Interpolate (Listing 6-1) and DrawLine (Listing 6-2), which draws with the
+// book's PutPixel (the checker's, or the page's, in its place).
 "use strict";
 
-let PutPixel = () => { throw new Error("your canvas goes here"); };
-
-function configure(given) {
-  if (given.PutPixel) PutPixel = given.PutPixel;
-}
+let Cw = 600, Ch = 600;  // the canvas
+let PutPixel = () => { throw new Error("the canvas goes here"); };
 
 // Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
 // book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
@@ -36,5 +33,3 @@ function DrawLine(P0, P1, color) {
     for (let y = P0.y; y <= P1.y; y++) PutPixel(xs[y - P0.y], y, color);
   }
 }
-
-module.exports = { configure, Interpolate, DrawLine };

@@ -1,13 +1,73 @@
 // cases: 08 (tests/cases/08-shaded-triangles.json)
 // Chapter 8, "Shaded Triangles", in plain JavaScript, as the book writes it: the
-// checker's reference (tools/check-functions). DrawShadedTriangle (Listing 8-1): each
-// vertex has an intensity h, interpolated along the edges and across each row.
+// checker's reference (tools/check-functions), one script as a reader writes it on a
+// chapter's page. Chapter 7's script carried forward, with DrawShadedTriangle (Listing
+// 8-1): each vertex has an intensity h, interpolated along the edges and across each
+// row.
 "use strict";
 
-const { Interpolate } = require("./lines.js");
+let Cw = 600, Ch = 600;  // the canvas
+let PutPixel = () => { throw new Error("the canvas goes here"); };
 
-let PutPixel = () => { throw new Error("your canvas goes here"); };
+// Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+// book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+// (docs/conventions.md).
+function Interpolate(i0, d0, i1, d1) {
+  if (i0 === i1) return [d0];
+  const values = [];
+  const a = (d1 - d0) / (i1 - i0);
+  for (let i = i0; i <= i1; i++) values.push(d0 + a * (i - i0));
+  return values;
+}
 
+// Listing 6-2: one pixel per step along the axis the line spans most.
+function DrawLine(P0, P1, color) {
+  if (Math.abs(P1.x - P0.x) > Math.abs(P1.y - P0.y)) {
+    // The line is horizontal-ish. Make sure x0 < x1
+    if (P0.x > P1.x) [P0, P1] = [P1, P0];
+    const ys = Interpolate(P0.x, P0.y, P1.x, P1.y);
+    for (let x = P0.x; x <= P1.x; x++) PutPixel(x, ys[x - P0.x], color);
+  } else {
+    // The line is vertical-ish. Make sure y0 < y1
+    if (P0.y > P1.y) [P0, P1] = [P1, P0];
+    const xs = Interpolate(P0.y, P0.x, P1.y, P1.x);
+    for (let y = P0.y; y <= P1.y; y++) PutPixel(xs[y - P0.y], y, color);
+  }
+}
+
+function DrawWireframeTriangle(P0, P1, P2, color) {
+  DrawLine(P0, P1, color);
+  DrawLine(P1, P2, color);
+  DrawLine(P2, P0, color);
+}
+
+// Listing 7-1: for each row, from the long side to the two short ones.
+function DrawFilledTriangle(P0, P1, P2, color) {
+  // Sort the points so that y0 <= y1 <= y2
+  if (P1.y < P0.y) [P1, P0] = [P0, P1];
+  if (P2.y < P0.y) [P2, P0] = [P0, P2];
+  if (P2.y < P1.y) [P2, P1] = [P1, P2];
+
+  // Compute the x coordinates of the triangle edges
+  const x01 = Interpolate(P0.y, P0.x, P1.y, P1.x);
+  const x12 = Interpolate(P1.y, P1.x, P2.y, P2.x);
+  const x02 = Interpolate(P0.y, P0.x, P2.y, P2.x);
+
+  // Concatenate the short sides
+  x01.pop();
+  const x012 = x01.concat(x12);
+
+  // Determine which is left and which is right
+  const m = Math.floor(x012.length / 2);
+  const [x_left, x_right] = x02[m] < x012[m] ? [x02, x012] : [x012, x02];
+
+  // Draw the horizontal segments
+  for (let y = P0.y; y <= P2.y; y++) {
+    for (let x = Math.trunc(x_left[y - P0.y]); x <= Math.trunc(x_right[y - P0.y]); x++) {
+      PutPixel(x, y, color);
+    }
+  }
+}
 
 // Listing 8-1: Listing 7-1 with h carried along.
 function DrawShadedTriangle(P0, P1, P2, color) {
@@ -45,5 +105,3 @@ function DrawShadedTriangle(P0, P1, P2, color) {
     }
   }
 }
-
-module.exports = { DrawShadedTriangle };

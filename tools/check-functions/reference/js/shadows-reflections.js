@@ -1,16 +1,47 @@
 // cases: 04 (tests/cases/04-shadows-reflections.json)
 // Chapter 4, "Shadows and Reflections", in plain JavaScript, as the book writes it: the
-// checker's reference (tools/check-functions). ClosestIntersection (Listing 4-2),
-// ComputeLighting with shadows (Listing 4-3), ReflectRay (Listing 4-4) and the
+// checker's reference (tools/check-functions), one script as a reader writes it on a
+// chapter's page. Chapter 3's script carried forward, with ClosestIntersection (Listing
+// 4-2), ComputeLighting with shadows (Listing 4-3), ReflectRay (Listing 4-4) and the
 // recursive TraceRay (Listing 4-5).
 "use strict";
 
-const { Vec3, IntersectRaySphere } = require("./basic-rays.js");
-require("./light.js");  // Vec3's plus, times and length
+class Vec3 {
+  constructor(x, y, z) { Object.assign(this, { x, y, z }); }
+  minus(v) { return new Vec3(this.x - v.x, this.y - v.y, this.z - v.z); }
+  plus(v) { return new Vec3(this.x + v.x, this.y + v.y, this.z + v.z); }
+  times(k) { return new Vec3(k * this.x, k * this.y, k * this.z); }
+  dot(v) { return this.x * v.x + this.y * v.y + this.z * v.z; }
+  length() { return Math.sqrt(this.dot(this)); }
+}
 
+let Cw = 600, Ch = 600;       // the canvas
+let Vw = 1, Vh = 1, d = 1;    // the viewport, at distance d
 const EPSILON = 0.001;  // where shadow and reflected rays start, so a point does not hit itself
-let scene = { spheres: [], lights: [], background_color: [0, 0, 0] };
+let scene = { spheres: [], lights: [], background_color: [255, 255, 255] };
 
+
+// Listing 2-2: a canvas point to the viewport point it looks through.
+function CanvasToViewport(x, y) {
+  return new Vec3(x * Vw / Cw, y * Vh / Ch, d);
+}
+
+// Listing 2-3: the two solutions of t^2<D,D> + 2t<CO,D> + <CO,CO> - r^2 = 0.
+function IntersectRaySphere(O, D, sphere) {
+  const r = sphere.radius;
+  const CO = O.minus(sphere.center);
+
+  const a = D.dot(D);
+  const b = 2 * CO.dot(D);
+  const c = CO.dot(CO) - r * r;
+
+  const discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) return [Infinity, Infinity];
+
+  const t1 = (-b + Math.sqrt(discriminant)) / (2 * a);
+  const t2 = (-b - Math.sqrt(discriminant)) / (2 * a);
+  return [t1, t2];
+}
 
 // Listing 4-2: the nearest sphere the ray meets in [t_min, t_max], and its t.
 function ClosestIntersection(O, D, t_min, t_max) {
@@ -18,8 +49,14 @@ function ClosestIntersection(O, D, t_min, t_max) {
   let closest_sphere = null;
   for (const sphere of scene.spheres) {
     const [t1, t2] = IntersectRaySphere(O, D, sphere);
-    if (t_min <= t1 && t1 <= t_max && t1 < closest_t) [closest_t, closest_sphere] = [t1, sphere];
-    if (t_min <= t2 && t2 <= t_max && t2 < closest_t) [closest_t, closest_sphere] = [t2, sphere];
+    if (t_min <= t1 && t1 <= t_max && t1 < closest_t) {
+      closest_t = t1;
+      closest_sphere = sphere;
+    }
+    if (t_min <= t2 && t2 <= t_max && t2 < closest_t) {
+      closest_t = t2;
+      closest_sphere = sphere;
+    }
   }
   return [closest_sphere, closest_t];
 }
@@ -78,5 +115,3 @@ function TraceRay(O, D, t_min, t_max, recursion_depth) {
   const reflected_color = TraceRay(P, R, EPSILON, Infinity, recursion_depth - 1);
   return local_color.map((channel, k) => channel * (1 - r) + reflected_color[k] * r);
 }
-
-module.exports = { Vec3, ClosestIntersection, ComputeLighting, ReflectRay, TraceRay };

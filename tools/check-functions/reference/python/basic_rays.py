@@ -1,7 +1,7 @@
 # cases: 02 (tests/cases/02-basic-rays.json)
-"""Chapter 2, "Basic Raytracing", in plain Python, as the book writes it: the runner's
-reference (tools/check-functions). The book's globals are module variables; vectors
-and colours are tuples."""
+"""Chapter 2, "Basic Raytracing", in plain Python, as the book writes it: the checker's
+reference (tools/check-functions), one module as a reader writes it on a chapter's
+page. The book's globals are module variables; vectors and colours are tuples."""
 
 import math
 

@@ -1,14 +1,23 @@
 # cases: 03 (tests/cases/03-light.json)
 """Chapter 3, "Light", in plain Python, as the book writes it: the checker's reference
-(tools/check-functions). Chapter 2's functions, and ComputeLighting (Listings 3-1 and
-3-2) used by TraceRay (Listing 3-3)."""
+(tools/check-functions), one module as a reader writes it on a chapter's page.
+Chapter 2's module carried forward, with ComputeLighting (Listings 3-1 and 3-2) used
+by TraceRay (Listing 3-3)."""
 
 import math
 
-from basic_rays import IntersectRaySphere, dot, subtract
-
+Cw, Ch = 600, 600  # the canvas
+Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 scene = None
 BACKGROUND_COLOR = (255, 255, 255)
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def subtract(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
 
 
 def length(v):
@@ -21,6 +30,29 @@ def scaled(k, v):
 
 def added(a, b):
     return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+# Listing 2-2: a canvas point to the viewport point it looks through.
+def CanvasToViewport(x, y):
+    return (x * Vw / Cw, y * Vh / Ch, d)
+
+
+# Listing 2-3: the two solutions of t^2<D,D> + 2t<CO,D> + <CO,CO> - r^2 = 0.
+def IntersectRaySphere(O, D, sphere):
+    r = sphere.radius
+    CO = subtract(O, sphere.center)
+
+    a = dot(D, D)
+    b = 2 * dot(CO, D)
+    c = dot(CO, CO) - r * r
+
+    discriminant = b * b - 4 * a * c
+    if discriminant < 0:
+        return math.inf, math.inf
+
+    t1 = (-b + math.sqrt(discriminant)) / (2 * a)
+    t2 = (-b - math.sqrt(discriminant)) / (2 * a)
+    return t1, t2
 
 
 # Listings 3-1 and 3-2: the light at P with normal N, seen along V; s = -1 is matte.

@@ -1,13 +1,14 @@
 # cases: 06 (tests/cases/06-lines.json)
 """Chapter 6, "Lines", in plain Python, as the book writes it: the checker's reference
-(tools/check-functions). Interpolate (Listing 6-1) and DrawLine (Listing 6-2), which
-draws with the book's PutPixel (the checker puts its own in its place)."""
+(tools/check-functions), one module as a reader writes it on a chapter's page.
+Interpolate (Listing 6-1) and DrawLine (Listing 6-2), which draws with the book's
+PutPixel (the checker's, or the page's, in its place)."""
 
-Cw, Ch = 600, 600
+Cw, Ch = 600, 600  # the canvas
 
 
 def PutPixel(x, y, color):
-    raise NotImplementedError("your canvas goes here")
+    raise NotImplementedError("the canvas goes here")
 
 
 # Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The

@@ -1,13 +1,83 @@
 # cases: 08 (tests/cases/08-shaded-triangles.json)
-"""Chapter 8, "Shaded Triangles", in plain Python, as the book writes it: the runner's
-reference (tools/check-functions). DrawShadedTriangle (Listing 8-1): each vertex has
-an intensity h, interpolated along the edges and across each row."""
+"""Chapter 8, "Shaded Triangles", in plain Python, as the book writes it: the checker's
+reference (tools/check-functions), one module as a reader writes it on a chapter's
+page. Chapter 7's module carried forward, with DrawShadedTriangle (Listing 8-1): each
+vertex has an intensity h, interpolated along the edges and across each row."""
 
-from lines import Interpolate
+Cw, Ch = 600, 600  # the canvas
 
 
 def PutPixel(x, y, color):
-    raise NotImplementedError("your canvas goes here")
+    raise NotImplementedError("the canvas goes here")
+
+
+# Listing 6-1: the values of d for each whole i from i0 to i1, d0 to d1 in a line. The
+# book adds a at each step (d = d + a), which drifts: d0 + a (i - i0) does not
+# (docs/conventions.md).
+def Interpolate(i0, d0, i1, d1):
+    if i0 == i1:
+        return [d0]
+    values = []
+    a = (d1 - d0) / (i1 - i0)
+    for i in range(i0, i1 + 1):
+        values.append(d0 + a * (i - i0))
+    return values
+
+
+# Listing 6-2: one pixel per step along the axis the line spans most.
+def DrawLine(P0, P1, color):
+    if abs(P1.x - P0.x) > abs(P1.y - P0.y):
+        # The line is horizontal-ish. Make sure x0 < x1
+        if P0.x > P1.x:
+            P0, P1 = P1, P0
+        ys = Interpolate(P0.x, P0.y, P1.x, P1.y)
+        for x in range(int(P0.x), int(P1.x) + 1):
+            PutPixel(x, ys[x - int(P0.x)], color)
+    else:
+        # The line is vertical-ish. Make sure y0 < y1
+        if P0.y > P1.y:
+            P0, P1 = P1, P0
+        xs = Interpolate(P0.y, P0.x, P1.y, P1.x)
+        for y in range(int(P0.y), int(P1.y) + 1):
+            PutPixel(xs[y - int(P0.y)], y, color)
+
+
+def DrawWireframeTriangle(P0, P1, P2, color):
+    DrawLine(P0, P1, color)
+    DrawLine(P1, P2, color)
+    DrawLine(P2, P0, color)
+
+
+# Listing 7-1: for each row, from the long side to the two short ones.
+def DrawFilledTriangle(P0, P1, P2, color):
+    # Sort the points so that y0 <= y1 <= y2
+    if P1.y < P0.y:
+        P1, P0 = P0, P1
+    if P2.y < P0.y:
+        P2, P0 = P0, P2
+    if P2.y < P1.y:
+        P2, P1 = P1, P2
+
+    # Compute the x coordinates of the triangle edges
+    x01 = Interpolate(P0.y, P0.x, P1.y, P1.x)
+    x12 = Interpolate(P1.y, P1.x, P2.y, P2.x)
+    x02 = Interpolate(P0.y, P0.x, P2.y, P2.x)
+
+    # Concatenate the short sides
+    x01.pop()
+    x012 = x01 + x12
+
+    # Determine which is left and which is right
+    m = len(x012) // 2
+    if x02[m] < x012[m]:
+        x_left, x_right = x02, x012
+    else:
+        x_left, x_right = x012, x02
+
+    # Draw the horizontal segments
+    for y in range(P0.y, P2.y + 1):
+        for x in range(int(x_left[y - P0.y]), int(x_right[y - P0.y]) + 1):
+            PutPixel(x, y, color)
 
 
 # Listing 8-1: Listing 7-1 with h carried along.

@@ -1,17 +1,60 @@
 # cases: 04 (tests/cases/04-shadows-reflections.json)
 """Chapter 4, "Shadows and Reflections", in plain Python, as the book writes it: the
-checker's reference (tools/check-functions). ClosestIntersection (Listing 4-2),
-ComputeLighting with shadows (Listing 4-3), ReflectRay (Listing 4-4) and the
+checker's reference (tools/check-functions), one module as a reader writes it on a
+chapter's page. Chapter 3's module carried forward, with ClosestIntersection (Listing
+4-2), ComputeLighting with shadows (Listing 4-3), ReflectRay (Listing 4-4) and the
 recursive TraceRay (Listing 4-5)."""
 
 import math
 
-from basic_rays import IntersectRaySphere, dot, subtract
-from light import added, length, scaled
-
+Cw, Ch = 600, 600  # the canvas
+Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 scene = None
-BACKGROUND_COLOR = (0, 0, 0)
+BACKGROUND_COLOR = (255, 255, 255)
 EPSILON = 0.001  # where shadow and reflected rays start, so a point does not hit itself
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def subtract(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def length(v):
+    return math.sqrt(dot(v, v))
+
+
+def scaled(k, v):
+    return (k * v[0], k * v[1], k * v[2])
+
+
+def added(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+# Listing 2-2: a canvas point to the viewport point it looks through.
+def CanvasToViewport(x, y):
+    return (x * Vw / Cw, y * Vh / Ch, d)
+
+
+# Listing 2-3: the two solutions of t^2<D,D> + 2t<CO,D> + <CO,CO> - r^2 = 0.
+def IntersectRaySphere(O, D, sphere):
+    r = sphere.radius
+    CO = subtract(O, sphere.center)
+
+    a = dot(D, D)
+    b = 2 * dot(CO, D)
+    c = dot(CO, CO) - r * r
+
+    discriminant = b * b - 4 * a * c
+    if discriminant < 0:
+        return math.inf, math.inf
+
+    t1 = (-b + math.sqrt(discriminant)) / (2 * a)
+    t2 = (-b - math.sqrt(discriminant)) / (2 * a)
+    return t1, t2
 
 
 # Listing 4-2: the nearest sphere the ray meets in [t_min, t_max], and its t.
