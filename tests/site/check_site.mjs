@@ -17,124 +17,16 @@
 // Usage: node check_site.mjs REPO SITE NATIVE_BUILD
 //            [--speed CHAPTER:FIGURE ... | --screenshot PAGE WIDTHxHEIGHT FILE]
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
-import {spawn, execFileSync} from 'node:child_process';
+import {execFileSync} from 'node:child_process';
 import {createHash} from 'node:crypto';
 import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, dirname, resolve} from 'node:path';
+import {Browser, Fail, Failures, sleep} from './browser.mjs';
 import {ReadPng} from './png.mjs';
 
 const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
 const speedIndex = process.argv.indexOf('--speed');
-const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
-let failures = 0;
-function Fail(line) { console.log(`FAIL: ${line}`); ++failures; }
-
-// Chromium, and one page of it, spoken to through --remote-debugging-pipe: the
-// browser reads commands from its file descriptor 3 and writes its answers to 4, each
-// message JSON ended by a NUL byte (no WebSocket, so any Node.js from 18 on will do).
-class Browser {
-  static async Open() {
-    const profile = mkdtempSync(join(tmpdir(), 'cgfs-site-'));
-    const binary = ['chromium', 'chromium-browser'].find((name) => {
-      try { execFileSync('sh', ['-c', `command -v ${name}`]); return true; } catch { return false; }
-    });
-    if (!binary) {
-      console.log('check_site: no Chromium to load the pages in: install the Debian package chromium');
-      globalThis.process.exit(2);
-    }
-    const process = spawn(binary, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
-      '--window-size=1400,1000', '--remote-debugging-pipe', `--user-data-dir=${profile}`, 'about:blank'],
-    {stdio: ['ignore', 'ignore', 'ignore', 'pipe', 'pipe']});
-    const browser = new Browser(process, profile);
-    const {targetId} = await browser.Send('Target.createTarget', {url: 'about:blank'});
-    browser.session = (await browser.Send('Target.attachToTarget', {targetId, flatten: true})).sessionId;
-    await browser.Send('Page.enable');
-    return browser;
-  }
-
-  constructor(process, profile) {
-    Object.assign(this, {process, profile, next: 1, waiting: new Map(), session: undefined});
-    let unread = '';
-    process.stdio[3].on('error', () => {});  // once the browser has quit
-    process.stdio[4].setEncoding('utf8');
-    process.stdio[4].on('data', (chunk) => {
-      const messages = (unread + chunk).split('\0');
-      unread = messages.pop();
-      for (const text of messages) this.Answer(JSON.parse(text));
-    });
-  }
-
-  Answer(message) {
-    const waiter = this.waiting.get(message.id);
-    if (waiter) {
-      this.waiting.delete(message.id);
-      message.error ? waiter.reject(new Error(message.error.message)) : waiter.resolve(message.result);
-    }
-  }
-
-  Send(method, params = {}) {
-    const id = this.next++;
-    this.process.stdio[3].write(JSON.stringify({id, method, params, sessionId: this.session}) + '\0');
-    return new Promise((resolve, reject) => this.waiting.set(id, {resolve, reject}));
-  }
-
-  // The value of a JavaScript expression in the page (awaited when it is a promise).
-  async Evaluate(expression) {
-    const {result, exceptionDetails} = await this.Send('Runtime.evaluate',
-        {expression, awaitPromise: true, returnByValue: true});
-    if (exceptionDetails) throw new Error(`${expression}: ${exceptionDetails.exception?.description}`);
-    return result.value;
-  }
-
-  async WaitFor(expression, what, seconds = 60) {
-    for (let waited = 0; waited < seconds * 1000; waited += 50) {
-      if (await this.Evaluate(expression)) return true;
-      await sleep(50);
-    }
-    Fail(`${what}: not within ${seconds} s`);
-    return false;
-  }
-
-  async Open(page) {
-    const url = `file://${site}/${page}`;
-    await this.Send('Page.navigate', {url});
-    // The page keeps the figure shown in its address: compared without the query.
-    const bare = url.replace(/[?#].*$/, '');
-    return this.WaitFor(`location.href.replace(/[?#].*$/, '') === ${JSON.stringify(bare)} && document.readyState === 'complete' && ` +
-                        "(document.getElementById('live')?.dataset.ready === 'yes' || " +
-                        "!document.getElementById('status')?.textContent.startsWith('Loading'))", `${page} loads`);
-  }
-
-  async Key(key) {
-    const named = {ArrowUp: 38, ArrowDown: 40, ArrowLeft: 37, ArrowRight: 39, PageUp: 33, PageDown: 34,
-      Home: 36, End: 35};
-    const code = named[key] ?? key.toUpperCase().charCodeAt(0);
-    const common = {key, windowsVirtualKeyCode: code, code: named[key] ? key : `Key${key.toUpperCase()}`};
-    await this.Send('Input.dispatchKeyEvent', {type: 'keyDown', ...common, text: named[key] ? undefined : key});
-    await this.Send('Input.dispatchKeyEvent', {type: 'keyUp', ...common});
-  }
-
-  async Drag(fromX, fromY, right, down) {
-    const mouse = (type, x, y, buttons) =>
-      this.Send('Input.dispatchMouseEvent', {type, x, y, button: 'left', buttons, clickCount: 1});
-    await mouse('mousePressed', fromX, fromY, 1);
-    for (let step = 1; step <= 4; ++step) {
-      await mouse('mouseMoved', fromX + right * step / 4, fromY + down * step / 4, 1);
-    }
-    await mouse('mouseReleased', fromX + right, fromY + down, 0);
-  }
-
-  // Asks Chromium to quit, and removes its profile once its last process has left it.
-  async Close() {
-    const exited = new Promise((done) => this.process.once('exit', done));
-    this.session = undefined;
-    this.Send('Browser.close').catch(() => {});
-    await Promise.race([exited, sleep(10000)]);
-    this.process.kill();
-    rmSync(this.profile, {recursive: true, force: true, maxRetries: 50, retryDelay: 100});
-  }
-}
 
 const kCanvasDigest = `(async () => {
   const canvas = document.getElementById('canvas');
@@ -313,7 +205,7 @@ async function Screenshot(browser, page, size, file) {
   console.log(`wrote ${file}`);
 }
 
-const browser = await Browser.Open();
+const browser = await Browser.Open(site);
 const screenshotIndex = process.argv.indexOf('--screenshot');
 try {
   if (screenshotIndex > 0) {
@@ -332,5 +224,6 @@ try {
 } finally {
   await browser.Close();
 }
-console.log(failures === 0 ? 'PASS: the site' : `${failures} failed`);
-process.exit(failures === 0 ? 0 : 1);
+if (browser.outside.length) Fail(`the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(', ')}`);
+console.log(Failures() === 0 ? 'PASS: the site' : `${Failures()} failed`);
+process.exit(Failures() === 0 ? 0 : 1);

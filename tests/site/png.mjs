@@ -1,8 +1,8 @@
 // Reads a PNG file as the project writes them (8 bits, RGB or RGBA, not interlaced)
 // into RGBA bytes, as a canvas's ImageData holds them: enough to compare a page's
 // canvas with a golden image (tests/site/check_site.mjs) without a package.
-import {readFileSync} from 'node:fs';
-import {inflateSync} from 'node:zlib';
+import {readFileSync, writeFileSync} from 'node:fs';
+import {deflateSync, inflateSync} from 'node:zlib';
 
 // PNG's Paeth predictor: of the left, upper and upper-left bytes, the one nearest
 // to left + upper - upper-left.
@@ -53,4 +53,35 @@ export function ReadPng(path) {
     above = row;
   }
   return {width, height, rgba};
+}
+
+// CRC-32 of PNG's chunks (ISO 3309), a byte at a time.
+function Crc32(bytes) {
+  let crc = ~0;
+  for (const byte of bytes) {
+    crc ^= byte;
+    for (let bit = 0; bit < 8; ++bit) crc = (crc >>> 1) ^ (0xedb88320 & -(crc & 1));
+  }
+  return ~crc >>> 0;
+}
+
+// Writes RGBA bytes as an 8-bit RGBA PNG (every row filtered with None): a page's
+// picture, for the native tools to read (check_your_code.mjs hands one to cgfs-compare).
+export function WritePng(path, width, height, rgba) {
+  const chunk = (type, body) => {
+    const head = Buffer.alloc(8);
+    head.writeUInt32BE(body.length, 0);
+    head.write(type, 4, 'latin1');
+    const crc = Buffer.alloc(4);
+    crc.writeUInt32BE(Crc32(Buffer.concat([head.subarray(4), body])), 0);
+    return Buffer.concat([head, body, crc]);
+  };
+  const header = Buffer.alloc(13);
+  header.writeUInt32BE(width, 0);
+  header.writeUInt32BE(height, 4);
+  header.set([8, 6, 0, 0, 0], 8);
+  const rows = Buffer.alloc(height * (width * 4 + 1));
+  for (let y = 0; y < height; ++y) rows.set(rgba.subarray(y * width * 4, (y + 1) * width * 4), y * (width * 4 + 1) + 1);
+  writeFileSync(path, Buffer.concat([Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]),
+    chunk('IHDR', header), chunk('IDAT', deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]));
 }

@@ -24,7 +24,6 @@ const { definedFunctions } = require("./source_facts.js");
 
 const ROOT = path.resolve(__dirname, "..", "..");
 const CASES_DIR = path.join(ROOT, "tests", "cases");
-const LOAD_LIMIT = 60;  // seconds a file may take to load, apart from its cases' limits
 const GRACE = 2;  // seconds past a case's limit before its process is ended from outside
 const MAX_LINE = 5 << 20;  // characters of one answer
 
@@ -40,7 +39,7 @@ function languageOf(file) {
 }
 
 function parse(argv) {
-  const options = { timeLimit: 5 };
+  const options = {};
   const positional = [];
   const value = (i) => {
     if (i >= argv.length || argv[i].startsWith("--")) throw new Usage(`${argv[i - 1]} needs a value (${USAGE.split("\n")[0]})`);
@@ -65,7 +64,7 @@ function parse(argv) {
     throw new Usage(`give a chapter and your file (${USAGE.split("\n")[0]})`);
   }
   [options.chapter, options.module] = positional;
-  if (!(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
+  if (options.timeLimit !== undefined && !(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
   for (const file of [options.module, options.adapter]) {
     if (file === undefined) continue;
     let stat;
@@ -115,12 +114,12 @@ class ProcessRunner {
   constructor(options, totalCases) {
     Object.assign(this, { options, language: options.language, process: null, id: 0 });
     this.started = Date.now();
-    this.bound = (totalCases * options.timeLimit + LOAD_LIMIT) * 1000;
+    this.bound = (totalCases * options.timeLimit + options.loadLimit) * 1000;
     this.totalCases = totalCases;
   }
 
   start() {
-    const { file, args, env } = command(this.options, this.bound / 1000 + LOAD_LIMIT);
+    const { file, args, env } = command(this.options, this.bound / 1000 + this.options.loadLimit);
     const child = spawn(file, args, {
       cwd: path.dirname(path.resolve(this.options.module)), detached: true,
       stdio: ["ignore", "ignore", "ignore", "pipe", "pipe"],
@@ -193,10 +192,10 @@ class ProcessRunner {
     this.loadRequest = { load: { module: path.resolve(this.options.module), adapter: this.options.adapter && path.resolve(this.options.adapter), functions, names } };
     this.start();
     this.send(this.loadRequest);
-    const message = await this.next(LOAD_LIMIT);
+    const message = await this.next(this.options.loadLimit);
     const { CheckError } = await import("./core/report.mjs");
     const fail = (text) => { this.stop(); throw new CheckError(text); };
-    if (message.timeout) fail(`your module ${this.options.module} does not load: still running after ${LOAD_LIMIT} s`);
+    if (message.timeout) fail(`your module ${this.options.module} does not load: still running after ${this.options.loadLimit} s`);
     if (message.ended) fail(`your module ${this.options.module} does not load: it ended the process (exit ${message.ended}) while loading`);
     if (typeof message.load_error === "string") fail(message.load_error.split("\n")[0].slice(0, 500));
     const facts = message.loaded;
@@ -216,7 +215,7 @@ class ProcessRunner {
     if (!this.process) {
       this.start();
       this.send(this.loadRequest);
-      const message = await this.next(LOAD_LIMIT);
+      const message = await this.next(this.options.loadLimit);
       if (!message.loaded) {
         this.stop();
         return { garbled: "a new process for this case could not load your module" };
@@ -237,8 +236,7 @@ class ProcessRunner {
   }
 
   stoppedLine() {
-    return `stopped after ${Math.round((Date.now() - this.started) / 1000)} s, the most this check may take ` +
-      `(${this.totalCases} cases × ${this.options.timeLimit} s + ${LOAD_LIMIT} s to load): the cases after this one did not run`;
+    return this.stopped(Math.round((Date.now() - this.started) / 1000), this.totalCases, this.options);
   }
 }
 
@@ -256,8 +254,10 @@ async function main(argv) {
     process.stdout.write(`${USAGE}\n\nChecks your chapter's functions, one by one, against the cases of tests/cases/ (docs/students.md).\n`);
     return 0;
   }
-  const { chapterNamed, sections } = await import("./core/plan.mjs");
-  const { check } = await import("./core/report.mjs");
+  const { CASE_LIMIT, LOAD_LIMIT, chapterNamed, sections } = await import("./core/plan.mjs");
+  const { check, stoppedLine } = await import("./core/report.mjs");
+  options.timeLimit ??= CASE_LIMIT;
+  options.loadLimit = LOAD_LIMIT;
   const { adapterTemplate } = await import("./core/template.mjs");
   if (options.templateLanguage || (options.template && !options.module)) {
     process.stdout.write(adapterTemplate(options.templateLanguage ?? "python"));
@@ -270,6 +270,7 @@ async function main(argv) {
   }
   const totalCases = sections(chapter, files).flatMap((s) => s.entries).reduce((n, e) => n + e.cases.length, 0);
   const runner = new ProcessRunner(options, totalCases);
+  runner.stopped = stoppedLine;
   running = runner;
   try {
     if (options.template) {

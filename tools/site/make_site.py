@@ -3,16 +3,24 @@
 live by the chapter's C++ compiled to WebAssembly, its README, its source files and its
 diff from the chapter it continues; an index that mirrors the README's chapter table.
 
-Usage: make_site.py REPO WEB_BUILD OUT
+Usage: make_site.py REPO WEB_BUILD PYODIDE OUT
   REPO       the project's folder
   WEB_BUILD  where the web preset put <chapter>.js (build-web/web)
+  PYODIDE    npm's package pyodide, as scripts/site installs it
+             (build-web/npm/node_modules/pyodide): its files go into vendor/pyodide.js
   OUT        the site's folder (out/site): made whole in a fresh folder beside it
              (out/.site-new-*), then put in its place; nothing else is written
+
+The chapters with cases (tests/cases) get a "Your code" panel: an editor (Debian's
+libjs-codemirror, copied from /usr/share/javascript/codemirror), the function checker's
+core and the JavaScript runner bundled with esbuild (vendor/check.js, vendor/sources.js),
+and Pyodide for Python.
 
 Every page a README links to is made too (the docs, the golden images, the catalogues
 of mistakes, ...), so links work inside the site; a link to a file the repository does
 not have stops the build with one line. Exit status 0, or 1 with one line on stderr.
 """
+import base64
 import html
 import json
 import os
@@ -25,6 +33,15 @@ import tempfile
 from pathlib import Path, PurePosixPath
 
 SITE_FILES = Path(__file__).resolve().parent  # chapter.js, index.js, site.css
+CHECKER = SITE_FILES.parent / "check-functions"
+CODEMIRROR = Path("/usr/share/javascript/codemirror")
+NODE_MODULES = "/usr/share/nodejs"  # Debian's acorn and acorn-globals, which esbuild bundles
+# The files the site takes from Debian's CodeMirror 5 and from npm's Pyodide.
+CODEMIRROR_FILES = ["lib/codemirror.js", "lib/codemirror.css", "mode/javascript/javascript.js", "mode/python/python.js"]
+# Pyodide's two ES modules become scripts (a page opened from a file may start a classic
+# worker from a Blob, not a module worker), each under a global name.
+PYODIDE_SCRIPTS = {"loader": ("pyodide.mjs", "CGFS_PYODIDE_LOADER"), "asm": ("pyodide.asm.mjs", "CGFS_PYODIDE_ASM")}
+PYODIDE_BYTES = {"wasm": "pyodide.asm.wasm", "stdlib": "python_stdlib.zip"}
 IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".svg"}
 LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a page
 
@@ -35,8 +52,25 @@ LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a
 OPENING_FIGURES = {"16-business-card": "business-card-1-sample"}
 
 
+# The scripts of a chapter page's "Your code" panel, in order.
+YOUR_CODE_SCRIPTS = ["vendor/codemirror/codemirror.js", "vendor/codemirror/javascript.js",
+                     "vendor/codemirror/python.js", "vendor/check.js", "vendor/cases.js", "code_runner.js",
+                     "yourcode.js"]
+
+
 class SiteError(Exception):
     pass
+
+
+def bundled(entry, *options):
+    """An ES module and what it imports, as one script (esbuild, Debian's): the
+    checker's core for the pages, the JavaScript runner's worker with acorn; with
+    --bundle=false, one module alone made a script (Pyodide's)."""
+    result = subprocess.run(["esbuild", str(entry), "--bundle", "--format=iife", "--log-level=error", *options],
+                            capture_output=True, text=True, env={**os.environ, "NODE_PATH": NODE_MODULES})
+    if result.returncode != 0:
+        raise SiteError(f"esbuild could not bundle {entry}: {result.stderr.strip()}")
+    return result.stdout
 
 
 class SiteFolder:
@@ -110,9 +144,11 @@ def relative_link(from_page, to_page):
 
 
 class Site:
-    def __init__(self, repo, web_build, out):
+    def __init__(self, repo, web_build, pyodide, out):
         self.repo = Path(repo).resolve()
         self.web_build = Path(web_build)
+        self.pyodide = Path(pyodide)
+        self.cases = {p.stem: json.loads(p.read_text()) for p in sorted((self.repo / "tests" / "cases").glob("*.json"))}
         self.folder = SiteFolder(out)
         self.chapters = sorted(p.name for p in (self.repo / "chapters").iterdir()
                                if re.match(r"\d\d-", p.name) and p.is_dir())
@@ -167,8 +203,9 @@ class Site:
                                   input=text, capture_output=True, text=True, check=True).stdout
         return self.rewrite_links(add_heading_ids(rendered), repo_path, site_page)
 
-    def page(self, site_page, title, body, scripts=()):
+    def page(self, site_page, title, body, scripts=(), styles=()):
         css = relative_link(site_page, "site.css")
+        more_css = "".join(f'<link rel="stylesheet" href="{relative_link(site_page, s)}">\n' for s in styles)
         home = relative_link(site_page, "index.html")
         tags = "".join(f'<script src="{relative_link(site_page, s)}"></script>\n' for s in scripts)
         self.folder.write(site_page, f"""<!doctype html>
@@ -178,7 +215,7 @@ class Site:
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>{html.escape(title)}</title>
 <link rel="stylesheet" href="{css}">
-<link rel="icon" href="data:,">
+{more_css}<link rel="icon" href="data:,">
 </head>
 <body>
 <header><a href="{home}">Computer Graphics from Scratch — a C++ companion</a></header>
@@ -248,21 +285,54 @@ byte for byte, as the native program's golden image.</p>
 <article class="readme" id="readme" role="tabpanel">
 {article}
 </article>
-{self.your_code_panel(chapter)}
+{self.your_code_panel(chapter, title)}
 </div>
 </main>"""
         self.folder.write(f"{chapter}/figures-source.js",
                           "var CGFS_FIGURES_OF = self.CGFS_FIGURES_OF || {};\n"
                           f"CGFS_FIGURES_OF[{json.dumps(chapter)}] = {json.dumps((self.web_build / f'{chapter}.js').read_text())};\n")
+        has_code = chapter in self.cases
         self.page(site_page, f"{chapter} — {title}", body,
                   [f"{chapter}/figures-source.js", "vendor/sources.js", "figures_client.js", "chapter.js",
-                   *self.your_code_scripts(chapter)])
+                   *(YOUR_CODE_SCRIPTS if has_code else [])],
+                  ["vendor/codemirror/codemirror.css"] if has_code else [])
 
-    def your_code_panel(self, chapter):
-        return ""
-
-    def your_code_scripts(self, chapter):
-        return []
+    def your_code_panel(self, chapter, title):
+        """The "Your code" tab (yourcode.js), for a chapter with cases."""
+        if chapter not in self.cases:
+            return ""
+        return f"""<section id="your-code" role="tabpanel" hidden data-title="{html.escape(title)}">
+<div id="code-panel">
+<p class="code-intro">Write this chapter's functions yourself, in JavaScript or Python, under the book's names.
+<b>Check</b> runs the chapter's cases on them, with the messages of the command line's checker
+(<a href="{self.link(f"{chapter}/index.html", "docs/students.md")}#3-on-the-chapters-page">docs/students.md</a>);
+<b>Draw</b> draws a figure with them beside ours. Your code runs in this browser, in a worker of its own, and is
+kept here, for this chapter and language: nothing is sent anywhere.</p>
+<div class="code-bar">
+<select id="code-language" aria-label="the language you write in"><option value="javascript">JavaScript</option><option value="python">Python</option></select>
+<button type="button" id="code-check">Check</button>
+<span id="code-draw-group"><select id="code-figure" aria-label="the figure to draw"></select> <button type="button" id="code-draw">Draw</button></span>
+<button type="button" id="code-stop" hidden>Stop</button>
+</div>
+<div class="code-bar code-file-bar"><code id="code-file"></code>
+<button type="button" id="code-download">Download</button>
+<button type="button" id="code-open-button">Open…</button><input type="file" id="code-open" accept=".js,.mjs,.cjs,.py" hidden>
+<button type="button" id="code-start-over">Start over</button></div>
+<p id="code-no-drawing" class="note" hidden>No figure of this chapter is drawn by its checked functions alone:
+its figures take the whole pipeline (RenderScene and the rest), which the cases do not cover.</p>
+<textarea id="code-editor" aria-label="your code"></textarea>
+<p id="code-status" role="status"></p>
+<pre id="code-report"></pre>
+<div id="code-drawing" hidden>
+<div class="code-pictures">
+<figure><canvas id="code-ours"></canvas><figcaption>ours</figcaption></figure>
+<figure><canvas id="code-yours"></canvas><figcaption>yours</figcaption></figure>
+<figure><canvas id="code-difference"></canvas><figcaption>the difference</figcaption></figure>
+</div>
+<pre id="code-comparison"></pre>
+</div>
+</div>
+</section>"""
 
     def figure_sizes(self, chapter):
         """Each figure's size: its golden image's, which the native program draws at."""
@@ -402,14 +472,44 @@ programs, run the tests and compare your own images with these.</p>
     def vendor_sources(self):
         """vendor/sources.js: the text of every worker's own code, for the pages to make
         their workers from (a page opened from a file may start a worker from a Blob,
-        not from a file)."""
-        sources = {"figuresWorker": (SITE_FILES / "figures_worker.js").read_text()}
+        not from a file): the figures', and the reader's code's in JavaScript (bundled
+        with acorn) and Python (with the checker's runner)."""
+        sources = {
+            "figuresWorker": (SITE_FILES / "figures_worker.js").read_text(),
+            "jsWorker": bundled(CHECKER / "runners" / "js_worker.mjs"),
+            "pythonWorker": (SITE_FILES / "python_worker.js").read_text(),
+            "pythonRunner": (CHECKER / "runners" / "python_runner.py").read_text(),
+        }
         self.folder.write("vendor/sources.js", f"var CGFS_SOURCES = {json.dumps(sources)};\n")
 
+    def vendor_your_code(self):
+        """What the "Your code" panels share: the checker's core (vendor/check.js), the
+        cases and the figures drawn with a reader's functions (vendor/cases.js),
+        CodeMirror, and Pyodide's files (vendor/pyodide.js, loaded when Python is)."""
+        self.folder.write("vendor/check.js", bundled(SITE_FILES / "check_entry.mjs"))
+        drawings = json.loads((SITE_FILES / "drawings.json").read_text())["figures"]
+        self.folder.write("vendor/cases.js", f"var CGFS_CASES = {json.dumps(self.cases)};\n"
+                                             f"var CGFS_DRAWINGS = {json.dumps(drawings)};\n")
+        for name in CODEMIRROR_FILES:
+            source = CODEMIRROR / name
+            if not source.is_file():
+                raise SiteError(f"no {source}: install the Debian package libjs-codemirror (scripts/setup --site)")
+            self.folder.write(f"vendor/codemirror/{Path(name).name}", source.read_bytes())
+        if not (self.pyodide / "package.json").is_file():
+            raise SiteError(f"no {self.pyodide}/package.json: npm's pyodide is not installed there (scripts/site installs it)")
+        assets = {"lock": (self.pyodide / "pyodide-lock.json").read_text()}
+        for key, (name, global_name) in PYODIDE_SCRIPTS.items():
+            assets[key] = bundled(self.pyodide / name, "--bundle=false", f"--global-name={global_name}",
+                                  f"--define:import.meta.url=\"https://pyodide.invalid/{name}\"")
+        for key, name in PYODIDE_BYTES.items():
+            assets[key] = base64.b64encode((self.pyodide / name).read_bytes()).decode()
+        self.folder.write("vendor/pyodide.js", f"var CGFS_PYODIDE = {json.dumps(assets)};\n")
+
     def build(self):
-        for name in ("chapter.js", "index.js", "figures_client.js", "site.css"):
+        for name in ("chapter.js", "index.js", "figures_client.js", "site.css", "code_runner.js", "yourcode.js"):
             self.folder.write(name, (SITE_FILES / name).read_bytes())
         self.vendor_sources()
+        self.vendor_your_code()
         for chapter in self.chapters:
             if not (self.web_build / f"{chapter}.js").is_file():
                 raise SiteError(f"no {self.web_build}/{chapter}.js: build the web preset first")
@@ -425,7 +525,7 @@ programs, run the tests and compare your own images with these.</p>
 
 
 def main():
-    if len(sys.argv) != 4:
+    if len(sys.argv) != 5:
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
     site = None
@@ -438,7 +538,7 @@ def main():
         if site:
             site.folder.discard()
         return 1
-    print(f"wrote {count} chapter pages and their files to {sys.argv[3]}/index.html")
+    print(f"wrote {count} chapter pages and their files to {sys.argv[4]}/index.html")
     return 0
 
 

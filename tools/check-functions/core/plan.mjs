@@ -2,6 +2,10 @@
 // those of the earlier chapters whose functions it keeps unchanged ("keeps" in its case
 // file), each with the signature the student's function has.
 
+// Seconds a student's file may take to load (apart from its cases), and one case by default.
+export const LOAD_LIMIT = 60;
+export const CASE_LIMIT = 5;
+
 // A chapter's name from what a student typed: "02", "02-basic-rays" (null if none).
 export function chapterNamed(typed, chapters) {
   if (!/^[0-9]{2}(-[a-z0-9-]+)?$/.test(typed)) return null;

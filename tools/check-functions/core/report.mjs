@@ -196,6 +196,13 @@ async function checkFunction(entry, fact, context) {
   return { failed: true, lines };
 }
 
+// The line that ends a check which ran out of time: `seconds` it took, the most a check
+// of `totalCases` may take ({ timeLimit, loadLimit } in seconds).
+export function stoppedLine(seconds, totalCases, { timeLimit, loadLimit }) {
+  return `stopped after ${seconds} s, the most this check may take (${totalCases} cases × ${timeLimit} s + ` +
+    `${loadLimit} s to load): the cases after this one did not run`;
+}
+
 // The whole check. runner: { language, load(functions, names) -> facts (or throws
 // CheckError), run(request) -> answer, stoppedLine() }. Returns { lines, failed }.
 export async function check({ chapter, files, runner, file, adapterGiven = false }) {

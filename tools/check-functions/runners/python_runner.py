@@ -780,6 +780,16 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
 page_chapter = None
 
 
+def page_declare(code):
+    """The functions the reader's code defines, read before any of it runs (the page
+    holds page_load's account against it), as JSON; none when it is not Python (page_load
+    says the syntax error)."""
+    try:
+        return json.dumps(declared_functions(code))
+    except (SyntaxError, ValueError):
+        return "{}"
+
+
 def page_load(code, file, functions, names):
     """Loads the reader's code (text) as the module FILE; the chapter's account of
     itself, or why it does not load, as JSON."""
@@ -809,7 +819,11 @@ def page_case(request):
 
 
 def page_draw(recipe, kinds, progress):
-    return draw_figure(json.loads(recipe), page_chapter, json.loads(kinds), progress)
+    """The figure's RGBA bytes, or why it could not be drawn: one line."""
+    try:
+        return draw_figure(json.loads(recipe), page_chapter, json.loads(kinds), progress)
+    except BaseException as error:  # the reader's code: said, one line
+        return one_line(error)
 
 
 # The loop: a case at a time, each in a child process forked from this one.

@@ -1,0 +1,299 @@
+// The chapter pages' "Your code" panel (tools/site/yourcode.js), in headless Chromium, as
+// a reader uses it:
+//  - our reference chapters (tools/check-functions/reference/js), opened into the page,
+//    pass every case of chapters 2 to 15, with the same report the command line's
+//    checker gives for the same file, and draw every figure the page offers the same as
+//    ours, with the verdict cgfs-compare gives their picture;
+//  - three of each chapter's catalogued mistakes (typed_mistakes.json), typed in, fail
+//    the function they are in, with the command line's report;
+//  - a case that never returns ends on the time limit while the page answers clicks; a
+//    syntax error names its line; a chapter not written yet opens on the one before,
+//    carried forward;
+//  - in Python: chapters 2, 3 and 6 pass and draw, a mistake fails as the command line
+//    says, a syntax error names its line;
+//  - the business card's draw leaves the page answering clicks within 100 ms; on a
+//    1280 x 900 window every chapter page keeps its figure's caption and status in view;
+//  - nothing is asked of any machine but this one.
+// It prints how long each chapter's check took on the page.
+//
+// Usage: node check_your_code.mjs REPO SITE NATIVE_BUILD [--only PART ...]
+//   PART: carried, javascript, mistakes, loop, python, card, layout (all, without --only)
+// Exit status 0 when all passed, 1 when one failed (each failure is one line).
+import {execFileSync, spawnSync} from 'node:child_process';
+import {mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
+import {tmpdir} from 'node:os';
+import {basename, join, resolve} from 'node:path';
+import {Browser, Fail, Failures, sleep} from './browser.mjs';
+import {WritePng} from './png.mjs';
+
+const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
+const work = mkdtempSync(join(tmpdir(), 'cgfs-your-code-'));
+const reference = (language) => join(repo, 'tools', 'check-functions', 'reference', language === 'python' ? 'python' : 'js');
+const Chapters = () => readdirSync(join(repo, 'tests', 'cases')).map((name) => name.replace(/\.json$/, '')).sort();
+const drawings = JSON.parse(readFileSync(join(repo, 'tools', 'site', 'drawings.json'), 'utf8')).figures;
+
+// Our reference file of a chapter: the one whose first line names the chapter's cases.
+function ReferenceOf(chapter, language) {
+  const folder = reference(language);
+  const name = readdirSync(folder).find((each) => readFileSync(join(folder, each), 'utf8').startsWith(
+      `${language === 'python' ? '#' : '//'} cases: ${chapter.slice(0, 2)} `));
+  return join(folder, name);
+}
+
+// What the command line's checker says of a file: its report, without the line that
+// says whether it had a sandbox.
+function CliReport(chapter, file) {
+  const run = spawnSync('node', [join(repo, 'tools', 'check-functions', 'check-functions.js'), chapter.slice(0, 2), file],
+      {encoding: 'utf8'});
+  return run.stdout.split('\n').filter((line) => line && !line.startsWith('note: ')).join('\n');
+}
+
+// ---- The panel, driven as a reader drives it -------------------------------------------
+
+const $ = (id, what) => `document.getElementById('${id}').${what}`;
+
+async function OpenPanel(chapter, language) {
+  await browser.Open(`${chapter}/index.html`);
+  await browser.WaitFor(`${$('code-panel', 'dataset.ready')} === 'yes'`, `${chapter}: the Your code panel`);
+  await browser.Evaluate(`document.getElementById('tab-code').click()`);
+  if (await browser.Evaluate($('code-language', 'value')) !== language) {
+    await browser.Evaluate(`(() => { const s = document.getElementById('code-language'); s.value = '${language}';
+      s.dispatchEvent(new Event('change')); })()`);
+  }
+}
+
+async function Type(code) {
+  await browser.Evaluate(`document.querySelector('#code-panel .CodeMirror').CodeMirror.setValue(${JSON.stringify(code)})`);
+}
+
+// Opens a file into the editor through the page's own file input, as a reader's Open does.
+async function OpenFile(path) {
+  const {root} = await browser.Send('DOM.getDocument', {depth: 0});
+  const {nodeId} = await browser.Send('DOM.querySelector', {nodeId: root.nodeId, selector: '#code-open'});
+  await browser.Send('DOM.setFileInputFiles', {nodeId, files: [path]});
+  await browser.WaitFor(`${$('code-file', 'textContent')} === ${JSON.stringify(basename(path))} && ` +
+      `document.querySelector('#code-panel .CodeMirror').CodeMirror.getValue() === ${JSON.stringify(readFileSync(path, 'utf8'))}`,
+  `${path} opened`, 10);
+}
+
+async function Check(what, seconds = 120) {
+  await browser.Evaluate(`(() => { delete ${$('code-report', 'dataset.done')}; document.getElementById('code-check').click(); })()`);
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, `${what}: the check`, seconds);
+  return {report: await browser.Evaluate($('code-report', 'textContent')), status: await browser.Evaluate($('code-status', 'textContent'))};
+}
+
+// Draws a figure with the code in the editor: the page's comparison, and the picture.
+async function Draw(figure, seconds = 300) {
+  await browser.Evaluate(`(() => { document.getElementById('code-figure').value = '${figure}';
+    document.getElementById('code-draw').click(); })()`);
+  await sleep(100);
+  await browser.WaitFor(`${$('code-panel', 'dataset.busy')} === ''`, `${figure}: the draw`, seconds);
+  const verdict = await browser.Evaluate(`${$('code-drawing', 'dataset.verdict')} ?? ''`);
+  const comparison = await browser.Evaluate($('code-comparison', 'textContent'));
+  const status = await browser.Evaluate($('code-status', 'textContent'));
+  const picture = verdict ? await browser.Evaluate(`(() => { const d = document.getElementById('code-drawing').drawn;
+    let text = ''; for (let i = 0; i < d.pixels.length; i += 8192) text += String.fromCharCode(...d.pixels.subarray(i, i + 8192));
+    return [d.width, d.height, btoa(text)]; })()`) : null;
+  return {verdict, comparison, status, picture};
+}
+
+// The page's verdict on a figure, held against cgfs-compare's on the same picture.
+function SameAsCgfsCompare(chapter, figure, drawn) {
+  const [width, height, base64] = drawn.picture;
+  const file = join(work, `${figure}.png`);
+  WritePng(file, width, height, Buffer.from(base64, 'base64'));
+  const run = spawnSync(join(native, 'tools', 'cgfs-compare'), [`${chapter}/${figure}`, file], {encoding: 'utf8'});
+  const theirs = run.stdout.split('\n').filter((line) => !/^(expected|actual|difference image):/.test(line) && line).join('\n');
+  const page = drawn.comparison.split('\n').slice(1).filter(Boolean).join('\n');
+  if (theirs !== page) Fail(`${chapter}/${figure}: the page says\n${page}\ncgfs-compare says\n${theirs}`);
+}
+
+function SameReport(what, page, cli) {
+  if (page !== cli) Fail(`${what}: the page's report\n${page}\nis not the command line's\n${cli}`);
+}
+
+// ---- The checks -------------------------------------------------------------------------
+
+async function CheckReferences(language, chapters, drawn) {
+  const times = [];
+  let figures = 0;
+  for (const chapter of chapters) {
+    const file = ReferenceOf(chapter, language);
+    await OpenPanel(chapter, language);
+    await OpenFile(file);
+    const {report, status} = await Check(`${chapter} (${language})`);
+    SameReport(`${chapter}: ${basename(file)}`, report, CliReport(chapter, file));
+    if (/FAILED|not written/.test(report)) Fail(`${chapter}: our ${basename(file)} does not pass on the page:\n${report}`);
+    times.push([chapter, Number(/checked in ([\d.]+) s/.exec(status)?.[1])]);
+    for (const figure of Object.keys(drawings[chapter] ?? {}).filter((name) => drawn(chapter, name))) {
+      const result = await Draw(figure);
+      ++figures;
+      if (result.verdict !== 'pass') {
+        Fail(`${chapter}/${figure}, drawn with ${basename(file)}: ${result.status}\n${result.comparison}`);
+      } else {
+        SameAsCgfsCompare(chapter, figure, result);
+      }
+    }
+  }
+  console.log(`${language}: our reference chapters pass on the page, as on the command line, checked in ` +
+              times.map(([chapter, seconds]) => `${chapter.slice(0, 2)} ${seconds} s`).join(', ') +
+              `; ${figures} figures drawn with them, each compared as cgfs-compare compares it`);
+  return times;
+}
+
+async function CheckMistakes() {
+  const {chapters} = JSON.parse(readFileSync(join(repo, 'tests', 'site', 'typed_mistakes.json'), 'utf8'));
+  let count = 0;
+  for (const [chapter, mistakes] of Object.entries(chapters)) {
+    const catalogue = readFileSync(join(repo, 'tests', 'mistakes', `${chapter}.txt`), 'utf8');
+    const ours = ReferenceOf(chapter, 'javascript');
+    await OpenPanel(chapter, 'javascript');
+    await OpenFile(ours);
+    for (const {mistake, function: name, replace, with: instead} of mistakes) {
+      if (!catalogue.includes(`mistake: ${mistake}\n`)) Fail(`${chapter}: "${mistake}" is not in tests/mistakes/${chapter}.txt`);
+      const code = readFileSync(ours, 'utf8');
+      if (code.split(replace).length !== 2) Fail(`${chapter}: "${replace}" is not once in ${basename(ours)}`);
+      const file = join(work, 'mistakes', chapter, basename(ours));
+      execFileSync('mkdir', ['-p', join(work, 'mistakes', chapter)]);
+      writeFileSync(file, code.replace(replace, instead));
+      await Type(code.replace(replace, instead));
+      const {report} = await Check(`${chapter}: ${mistake}`);
+      if (!new RegExp(`^  ${name} +FAILED`, 'm').test(report)) Fail(`${chapter}: "${mistake}" typed in: ${name} did not fail:\n${report}`);
+      SameReport(`${chapter}: "${mistake}"`, report, CliReport(chapter, file));
+      ++count;
+    }
+  }
+  console.log(`${count} catalogued mistakes, typed in, each failed its function with the command line's report`);
+}
+
+// The time from a click to the page handling it, in milliseconds, for clicks on the
+// caption meanwhile (the main thread's delay: the event's own time to its handler).
+async function ClickDelays(until, most = 60) {
+  await browser.Evaluate(`(() => { window.__delays = []; document.addEventListener('click',
+    (event) => window.__delays.push(performance.now() - event.timeStamp), true); })()`);
+  const [x, y] = await browser.Evaluate(`(({x, y}) => [x + 5, y + 5])(document.getElementById('caption').getBoundingClientRect())`);
+  for (let i = 0; i < most && !(await browser.Evaluate(until)); ++i) {
+    await browser.Send('Input.dispatchMouseEvent', {type: 'mousePressed', x, y, button: 'left', buttons: 1, clickCount: 1});
+    await browser.Send('Input.dispatchMouseEvent', {type: 'mouseReleased', x, y, button: 'left', buttons: 0, clickCount: 1});
+    await sleep(200);
+  }
+  return browser.Evaluate('window.__delays');
+}
+
+async function CheckEndlessLoopAndSyntax() {
+  const ours = readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8');
+  await OpenPanel('02-basic-rays', 'javascript');
+  await Type(ours.replace('function CanvasToViewport(x, y) {', 'function CanvasToViewport(x, y) {\n  if (x === 0 && y === 0) for (;;) {}'));
+  await browser.Evaluate(`(() => { delete ${$('code-report', 'dataset.done')}; document.getElementById('code-check').click(); })()`);
+  const start = Date.now();
+  const delays = await ClickDelays(`${$('code-report', 'dataset.done')} === 'yes'`);
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, 'the endless loop\'s check', 60);
+  const report = await browser.Evaluate($('code-report', 'textContent'));
+  if (!/did not return within 5 s/.test(report)) Fail(`an endless loop: the report does not say it ran out of time:\n${report}`);
+  if (!/^ {2}IntersectRaySphere +passed/m.test(report)) Fail(`an endless loop: the cases after it did not run:\n${report}`);
+  if (delays.length < 5 || Math.max(...delays) > 100) Fail(`an endless loop: clicks meanwhile took ${delays.map(Math.round)} ms`);
+  console.log(`an endless loop ended on its case's time limit, the check in ${((Date.now() - start) / 1000).toFixed(1)} s; ` +
+              `${delays.length} clicks meanwhile answered within ${Math.round(Math.max(...delays))} ms`);
+  for (const [language, code, line] of [['javascript', 'function CanvasToViewport(x, y) {\n  return [x,, y;\n}\n', 2],
+    ['python', 'Cw = 600\n\n\ndef CanvasToViewport(x, y)\n    return x\n', 4]]) {
+    await OpenPanel('02-basic-rays', language);
+    await Type(code);
+    const {report: said} = await Check(`a syntax error (${language})`);
+    const file = language === 'python' ? 'basic_rays.py' : 'basic-rays.js';
+    if (!said.includes(`SyntaxError`) || !said.includes(`(at ${file}:${line})`)) {
+      Fail(`a ${language} syntax error on line ${line}: the page says "${said}"`);
+    } else {
+      console.log(`a ${language} syntax error: "${said}"`);
+    }
+  }
+}
+
+// Chapter 2 written, then chapter 3 opened: chapter 2's code carried forward, with
+// chapter 3's new function to write and its changed one named.
+async function CheckCarriedForward() {
+  await OpenPanel('02-basic-rays', 'javascript');
+  await browser.Evaluate('localStorage.clear()');
+  await OpenPanel('02-basic-rays', 'javascript');
+  await OpenFile(ReferenceOf('02-basic-rays', 'javascript'));
+  await OpenPanel('03-light', 'javascript');
+  const code = await browser.Evaluate(`document.querySelector('#code-panel .CodeMirror').CodeMirror.getValue()`);
+  const ours = readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8').trimEnd();
+  if (!code.startsWith(ours)) Fail('chapter 3 does not open on chapter 2\'s code');
+  if (!code.includes('function ComputeLighting(P, N, V, s) {\n}')) Fail(`chapter 3's ComputeLighting is not added to write:\n${code}`);
+  if (!code.includes('This chapter changes your TraceRay above')) Fail('chapter 3 does not say it changes TraceRay');
+  const {report} = await Check('chapter 3 carried forward');
+  if (!/^ {2}ComputeLighting +not written yet/m.test(report) || !/^ {2}TraceRay +FAILED/m.test(report) ||
+      !/^ {2}IntersectRaySphere +passed/m.test(report)) {
+    Fail(`chapter 3, carried forward from chapter 2: the report is\n${report}`);
+  }
+  console.log('chapter 3 opened on chapter 2\'s code carried forward: ComputeLighting to write, TraceRay to change');
+}
+
+async function CheckPythonMistake() {
+  const ours = ReferenceOf('02-basic-rays', 'python');
+  await OpenPanel('02-basic-rays', 'python');
+  await OpenFile(ours);
+  const code = readFileSync(ours, 'utf8').replace('y * Vh / Ch', 'y * Vh / Cw');
+  const file = join(work, 'python-mistake', basename(ours));
+  execFileSync('mkdir', ['-p', join(work, 'python-mistake')]);
+  writeFileSync(file, code);
+  await Type(code);
+  const {report} = await Check('a Python mistake');
+  if (!/^ {2}CanvasToViewport +FAILED/m.test(report)) Fail(`Python, y scaled by the width: CanvasToViewport did not fail:\n${report}`);
+  SameReport('Python, y scaled by the width', report, CliReport('02-basic-rays', file));
+}
+
+async function CheckCardResponsive() {
+  await browser.Open('16-business-card/index.html');
+  await browser.WaitFor(`${$('canvas', 'dataset.drawn')} === 'full'`, 'the card page\'s first figure');
+  await browser.Evaluate(`(() => { delete ${$('canvas', 'dataset.drawn')};
+    Array.from(document.querySelectorAll('#figure-lists button')).find((b) => b.textContent === 'business-card').click(); })()`);
+  const delays = await ClickDelays(`${$('canvas', 'dataset.drawn')} === 'full'`, 150);
+  if (delays.length < 3 || Math.max(...delays) > 100) Fail(`the business card's draw: clicks meanwhile took ${delays.map(Math.round)} ms`);
+  console.log(`the business card drew while ${delays.length} clicks were answered within ${Math.round(Math.max(...delays))} ms`);
+}
+
+// On a 1280 x 900 window, each chapter page's caption and status lie inside the window,
+// at the top of the page and at its bottom.
+async function CheckLayout() {
+  await browser.Send('Emulation.setDeviceMetricsOverride', {width: 1280, height: 900, deviceScaleFactor: 1, mobile: false});
+  for (const chapter of readdirSync(join(repo, 'chapters')).filter((name) => /^\d\d-/.test(name)).sort()) {
+    await browser.Open(`${chapter}/index.html`);
+    for (const where of ['top', 'bottom']) {
+      const inside = await browser.Evaluate(`(() => {
+        window.scrollTo(0, ${where === 'top' ? 0 : 'document.documentElement.scrollHeight'});
+        return ['caption', 'status', 'canvas'].every((id) => { const r = document.getElementById(id).getBoundingClientRect();
+          return r.top >= 0 && r.top + Math.min(r.height, 40) <= innerHeight && r.left >= 0 && r.right <= innerWidth; }); })()`);
+      if (!inside) Fail(`${chapter}: at the page's ${where}, the caption, status or figure is outside a 1280 x 900 window`);
+    }
+  }
+  await browser.Send('Emulation.clearDeviceMetricsOverride');
+  console.log('every chapter page keeps its caption, status and figure in a 1280 x 900 window, at its top and bottom');
+}
+
+const only = process.argv.includes('--only') ? process.argv.slice(process.argv.indexOf('--only') + 1) : null;
+const pythonDraws = {'02-basic-rays': 'fig-2-11', '03-light': 'fig-3-7-diffuse', '06-lines': 'fig-6-5'};
+const parts = {
+  carried: CheckCarriedForward,
+  javascript: () => CheckReferences('javascript', Chapters(), () => true),
+  mistakes: CheckMistakes,
+  loop: CheckEndlessLoopAndSyntax,
+  python: async () => {
+    await CheckReferences('python', Chapters(), (chapter, figure) => pythonDraws[chapter] === figure);
+    await CheckPythonMistake();
+  },
+  card: CheckCardResponsive,
+  layout: CheckLayout,
+};
+const browser = await Browser.Open(site);
+try {
+  for (const [name, part] of Object.entries(parts)) {
+    if (!only || only.includes(name)) await part();
+  }
+  if (browser.outside.length) Fail(`the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(', ')}`);
+} finally {
+  await browser.Close();
+  rmSync(work, {recursive: true, force: true});
+}
+console.log(Failures() === 0 ? 'PASS: your code on the chapter pages' : `${Failures()} failed`);
+process.exit(Failures() === 0 ? 0 : 1);

@@ -1,0 +1,186 @@
+// Where a reader's code runs on a chapter's page (yourcode.js): a Web Worker of its own,
+// JavaScript (CGFS_SOURCES.jsWorker, tools/check-functions/runners/js_worker.mjs bundled)
+// or Python (CGFS_SOURCES.pythonWorker, python_worker.js, with Pyodide's files from
+// vendor/pyodide.js, loaded only when Python is first wanted). Each check and each draw
+// gets a worker no code of the reader's has run in yet: its first answer, the functions
+// the code defines read from its syntax, is the page's own, and the account the code
+// then gives of itself is held against it, as the command line's checker holds a
+// process's. A case that runs past its time limit ends its worker; the next case gets a
+// new one. PageRunner is the runner the checker's core (vendor/check.js) drives, as the
+// command line's ProcessRunner is.
+'use strict';
+
+const kSiteRoot = new URL('.', document.currentScript.src);
+
+// Pyodide's files, from vendor/pyodide.js (a script, which a page opened from a file may
+// load where it may not fetch), decoded once.
+let pyodideAssets = null;
+function PyodideAssets() {
+  pyodideAssets ??= new Promise((resolve, reject) => {
+    const script = document.createElement('script');
+    script.src = new URL('vendor/pyodide.js', kSiteRoot).href;
+    script.onerror = () => reject(new Error('vendor/pyodide.js could not be loaded: build the site with scripts/site'));
+    script.onload = () => {
+      const bytes = (base64) => Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)).buffer;
+      const { loader, asm, wasm, stdlib, lock } = self.CGFS_PYODIDE;
+      resolve({ loader, asm, lock, wasm: bytes(wasm), stdlib: bytes(stdlib) });
+      delete self.CGFS_PYODIDE;
+    };
+    document.head.append(script);
+  });
+  return pyodideAssets;
+}
+
+const WorkerAddress = (text) => URL.createObjectURL(new Blob([text], { type: 'text/javascript' }));
+
+// One worker: requests answered one at a time, each within its limit (seconds) or the
+// worker is ended. `onProgress(fraction)` hears a draw's progress.
+class CodeWorker {
+  static async Start(language, onProgress) {
+    const worker = new CodeWorker(language, onProgress);
+    if (language === 'python') {
+      const answer = await worker.Request({ op: 'init', assets: await PyodideAssets(), runner: CGFS_SOURCES.pythonRunner }, 300);
+      if (!answer.ready) {
+        worker.End();
+        throw new Error(`Python could not be started: ${answer.unreadable ?? 'it took more than 300 s'}`);
+      }
+    }
+    return worker;
+  }
+
+  constructor(language, onProgress = () => {}) {
+    CodeWorker.addresses ??= {
+      javascript: WorkerAddress(CGFS_SOURCES.jsWorker), python: WorkerAddress(CGFS_SOURCES.pythonWorker),
+    };
+    this.worker = new Worker(CodeWorker.addresses[language]);
+    this.next = 1;
+    this.waiting = null;
+    this.onProgress = onProgress;
+    this.worker.onmessage = ({ data }) => {
+      if ('progress' in data) this.onProgress(data.progress);
+      else if (this.waiting?.id === data.id) this.waiting.resolve(data);
+    };
+  }
+
+  get Alive() { return this.worker !== null; }
+
+  // The answer, or { timeout: true } when there was none within `seconds` (the worker
+  // is ended then).
+  Request(message, seconds) {
+    if (!this.Alive) return Promise.resolve({ timeout: true });
+    const id = this.next++;
+    return new Promise((resolve) => {
+      const timer = setTimeout(() => { this.waiting = null; this.End(); resolve({ timeout: true }); }, seconds * 1000);
+      this.waiting = { id, resolve: (answer) => { clearTimeout(timer); this.waiting = null; resolve(answer); } };
+      this.worker.postMessage({ ...message, id });
+    });
+  }
+
+  End() {
+    this.worker?.terminate();
+    this.worker = null;
+    this.waiting?.resolve({ cancelled: true });
+  }
+}
+
+// Fresh workers, one made ready ahead (Python's takes seconds to start).
+class WorkerSupply {
+  constructor(language) {
+    this.language = language;
+    this.ready = null;
+  }
+
+  // A worker no code has run in, and the next one started.
+  async Take(onProgress) {
+    const taking = this.ready ?? CodeWorker.Start(this.language);
+    this.ready = null;
+    const worker = await taking;
+    worker.onProgress = onProgress ?? (() => {});
+    this.ready = CodeWorker.Start(this.language);
+    this.ready.catch(() => { this.ready = null; });
+    return worker;
+  }
+}
+
+const supplies = {};
+const SupplyFor = (language) => (supplies[language] ??= new WorkerSupply(language));
+
+// The reader's code loaded in a fresh worker: the account it gives of itself, held
+// against its syntax (read first, before any of it ran). Throws CheckError with the
+// command line's words when it does not load.
+async function LoadInWorker(worker, { code, file, functions, names }) {
+  const { CheckError, LOAD_LIMIT, heldAgainstFile } = CGFS_CHECK;
+  const declared = await worker.Request({ op: 'declare', code }, LOAD_LIMIT);
+  const message = await worker.Request({ op: 'load', code, file, functions, names }, LOAD_LIMIT);
+  if (message.timeout) throw new CheckError(`your code does not load: still running after ${LOAD_LIMIT} s`);
+  if (typeof message.load_error === 'string') throw new CheckError(message.load_error.split('\n')[0].slice(0, 500));
+  const facts = message.loaded;
+  if (!facts || typeof facts !== 'object' || !facts.functions || typeof facts.functions !== 'object' ||
+      !Array.isArray(facts.defined)) {
+    throw new CheckError('your code does not load: it said something else while loading');
+  }
+  return heldAgainstFile(facts, declared.declared ? new Map(Object.entries(declared.declared)) : null, functions);
+}
+
+// The runner the checker's core drives: load, then a case at a time.
+class PageRunner {
+  constructor({ language, code, file, timeLimit, totalCases, onStatus = () => {} }) {
+    Object.assign(this, { language, code, file, timeLimit, totalCases, onStatus, worker: null });
+    this.started = Date.now();
+    this.bound = (totalCases * timeLimit + CGFS_CHECK.LOAD_LIMIT) * 1000;
+  }
+
+  async load(functions, names) {
+    this.loadRequest = { code: this.code, file: this.file, functions, names };
+    if (this.language === 'python') this.onStatus('starting Python (Pyodide)…');
+    this.worker = await SupplyFor(this.language).Take();
+    this.onStatus('checking…');
+    this.started = Date.now();
+    return LoadInWorker(this.worker, this.loadRequest);
+  }
+
+  async run(request) {
+    if (Date.now() - this.started > this.bound) return { stopped: true };
+    if (!this.worker.Alive) {  // the last case ran out of time: a new worker
+      this.worker = await SupplyFor(this.language).Take();
+      try {
+        await LoadInWorker(this.worker, this.loadRequest);
+      } catch {
+        return { garbled: 'a new worker for this case could not load your code' };
+      }
+    }
+    const answer = await this.worker.Request({ op: 'case', request }, this.timeLimit);
+    if (answer.timeout) return { timeout: true, limit: this.timeLimit };
+    delete answer.id;
+    return { ...answer, limit: this.timeLimit };
+  }
+
+  stoppedLine() {
+    return CGFS_CHECK.stoppedLine(Math.round((Date.now() - this.started) / 1000), this.totalCases,
+      { timeLimit: this.timeLimit, loadLimit: CGFS_CHECK.LOAD_LIMIT });
+  }
+
+  End() { this.worker?.End(); }
+}
+
+// A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },
+// or { problem } (one line), or { cancelled } when `cancel` was called first.
+async function DrawWithCode({ language, code, file, functions, names, recipe, kinds, seconds, onProgress, onStatus }) {
+  if (language === 'python') onStatus('starting Python (Pyodide)…');
+  const worker = await SupplyFor(language).Take(onProgress);
+  DrawWithCode.current = worker;
+  try {
+    onStatus('loading your code…');
+    await LoadInWorker(worker, { code, file, functions, names });
+    onStatus('drawing…');
+    const answer = await worker.Request({ op: 'draw', recipe, kinds }, seconds);
+    if (answer.timeout) return { problem: `still drawing after ${seconds} s` };
+    return answer;
+  } catch (error) {
+    return { problem: error.message };
+  } finally {
+    worker.End();
+    DrawWithCode.current = null;
+  }
+}
+DrawWithCode.Cancel = () => DrawWithCode.current?.End();

@@ -1,0 +1,92 @@
+// The Web Worker a reader's Python runs in on a chapter's page: Pyodide, the CPython of
+// npm's package `pyodide` compiled to WebAssembly, with the checker's own runner
+// (tools/check-functions/runners/python_runner.py) in it. Nothing is fetched: the page
+// sends Pyodide's files (vendor/pyodide.js, made by scripts/site) with `init`, and any
+// other request Pyodide makes is refused. A classic worker, for a page opened from a
+// file may start no other from a Blob: Pyodide's two ES modules come as scripts (made
+// by scripts/site with esbuild), and its loader, which refuses a classic worker because
+// it would import its runtime as a module, is given that runtime instead
+// (createPyodideModule) and loaded with importScripts hidden from its test. Messages
+// { id, op, ... }, answered { id, ... }, as js_worker.mjs's:
+//   init { assets, runner }                  Pyodide started, the runner imported
+//   declare { code }                         the functions the code defines, from its
+//                                            syntax, before any of it runs
+//   load { code, file, functions, names }    the chapter's account of itself, or why not
+//   case { request }                         what the function made of one case
+//   draw { recipe, kinds }                   a figure drawn with the reader's functions
+// The page ends the worker when a case or a draw runs too long.
+'use strict';
+
+let pyodide = null;
+let runner = null;
+
+// Pyodide's files, answered from what the page sent; nothing else is to be had.
+function OfflineFetch(files) {
+  return async (address) => {
+    const name = String(address?.url ?? address).split('/').pop();
+    if (name in files) {
+      return new Response(files[name], { headers: { 'Content-Type': name.endsWith('.wasm') ? 'application/wasm' : 'application/octet-stream' } });
+    }
+    throw new TypeError(`${address}: the page's Python has no network`);
+  };
+}
+
+const ScriptAddress = (text) => URL.createObjectURL(new Blob([text], { type: 'text/javascript' }));
+
+// Pyodide's runtime (CGFS_PYODIDE_ASM) and loader (CGFS_PYODIDE_LOADER), as scripts.
+function LoadPyodideScripts({ asm, loader }) {
+  const load = self.importScripts;
+  load.call(self, ScriptAddress(asm));
+  self.importScripts = () => { throw new Error('a classic worker, given its runtime'); };
+  try {
+    load.call(self, ScriptAddress(loader));
+  } finally {
+    self.importScripts = load;
+  }
+}
+
+const operations = {
+  async init({ assets, runner: runnerText }) {
+    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': assets.wasm, 'python_stdlib.zip': assets.stdlib });
+    LoadPyodideScripts(assets);
+    const start = performance.now();
+    pyodide = await CGFS_PYODIDE_LOADER.loadPyodide({
+      indexURL: 'https://pyodide.invalid/', stdLibURL: 'https://pyodide.invalid/python_stdlib.zip',
+      lockFileContents: assets.lock, createPyodideModule: CGFS_PYODIDE_ASM.default, stdout: () => {}, stderr: () => {},
+    });
+    pyodide.FS.mkdirTree('/home/pyodide/runner');
+    pyodide.FS.writeFile('/home/pyodide/runner/python_runner.py', runnerText);
+    pyodide.runPython("import sys\nsys.path.insert(0, '/home/pyodide/runner')\nimport python_runner");
+    runner = pyodide.pyimport('python_runner');
+    return { ready: true, milliseconds: performance.now() - start };
+  },
+  declare({ code }) {
+    return { declared: JSON.parse(runner.page_declare(code)) };
+  },
+  load({ code, file, functions, names }) {
+    return JSON.parse(runner.page_load(code, file, JSON.stringify(functions), JSON.stringify(names)));
+  },
+  case({ request }) {
+    return JSON.parse(runner.page_case(JSON.stringify(request)));
+  },
+  draw({ recipe, kinds }) {
+    const drawn = runner.page_draw(JSON.stringify(recipe), JSON.stringify(kinds),
+      (fraction) => postMessage({ progress: fraction }));
+    if (typeof drawn === 'string') return { problem: drawn };
+    const pixels = new Uint8ClampedArray(drawn.toJs());
+    drawn.destroy();
+    const { width, height } = recipe.given.canvas;
+    return { answer: { pixels, width, height }, transfer: [pixels.buffer] };
+  },
+};
+
+onmessage = async ({ data }) => {
+  let result;
+  try {
+    result = await operations[data.op](data);
+  } catch (error) {
+    result = { unreadable: `the page's Python failed: ${String(error?.message ?? error).trim().split('\n').pop()}` };
+  }
+  const { answer, transfer = [] } = result.answer ? result : { answer: result };
+  postMessage({ ...answer, id: data.id }, transfer);
+};

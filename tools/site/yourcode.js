@@ -1,0 +1,289 @@
+// The "Your code" panel of a chapter's page: the reader writes the chapter's functions
+// (JavaScript or Python) in an editor (CodeMirror 5, Debian's libjs-codemirror), checks
+// them against the chapter's cases with the command line's judgement and messages
+// (vendor/check.js, the checker's core), and draws a figure with them, compared with
+// ours as cgfs-compare compares (the comparison library in the chapter's WebAssembly,
+// figures_worker.js). The reader's code runs in a Web Worker of its own
+// (code_runner.js). It is kept in the browser's local storage, per chapter and
+// language; a chapter not written yet opens on the reader's previous chapter carried
+// forward, or on a starter. All of it inside one function: the page's other scripts
+// (chapter.js) have names of their own in the page's global scope.
+(() => {
+'use strict';
+
+const kDrawLimit = 300;  // seconds a figure drawn with the reader's functions may take
+
+const yourCode = {
+  chapter: document.getElementById('live').dataset.chapter,
+  title: document.getElementById('your-code').dataset.title,
+  files: CGFS_CASES,
+  drawings: CGFS_DRAWINGS[document.getElementById('live').dataset.chapter] ?? {},
+  editor: null,
+  language: 'javascript',
+  file: '',           // the name the report gives the code: the file opened, or the chapter's
+  running: null,      // the PageRunner of a check under way
+  figures: null,      // a FiguresWorker for ours and the comparison, made on the first draw
+};
+
+const $ = (id) => document.getElementById(id);
+const StorageKey = (chapter, language) => `cgfs-code:${chapter}:${language}`;
+
+function Stored(key) {
+  try {
+    return localStorage.getItem(key);
+  } catch {
+    return null;  // storage refused (a private window, a page opened from a file): nothing kept
+  }
+}
+
+function Store(key, value) {
+  try {
+    if (value === null) localStorage.removeItem(key);
+    else localStorage.setItem(key, value);
+  } catch {
+    $('code-status').textContent = 'Your browser keeps nothing for this page: Download keeps your code.';
+  }
+}
+
+// What the editor opens on: the reader's code of this chapter, or of the chapter before
+// carried forward, or a starter.
+function OpeningCode(language) {
+  const { chapter, files, title } = yourCode;
+  const stored = Stored(StorageKey(chapter, language));
+  if (stored !== null) return stored;
+  const previous = CGFS_CHECK.previousChapter(chapter, files);
+  const before = previous && Stored(StorageKey(previous, language));
+  return before ? CGFS_CHECK.carriedForward(chapter, before, files, language, title)
+    : CGFS_CHECK.freshStarter(chapter, files, language, title);
+}
+
+function ShowCode(language, code, file) {
+  yourCode.language = language;
+  yourCode.file = file ?? Stored(`${StorageKey(yourCode.chapter, language)}:file`) ??
+    CGFS_CHECK.fileName(yourCode.chapter, language);
+  $('code-language').value = language;
+  $('code-file').textContent = yourCode.file;
+  yourCode.editor.setOption('mode', language);
+  yourCode.editor.setValue(code);
+  yourCode.editor.clearHistory();
+}
+
+function Save() {
+  Store(StorageKey(yourCode.chapter, yourCode.language), yourCode.editor.getValue());
+}
+
+function Busy(what) {
+  for (const id of ['code-check', 'code-draw', 'code-language', 'code-open-button', 'code-start-over']) {
+    $(id).disabled = what !== null;
+  }
+  $('code-stop').hidden = what === null;
+  $('code-panel').dataset.busy = what ?? '';
+}
+
+function Status(text) {
+  $('code-status').textContent = text;
+}
+
+// Check: the chapter's cases, and those of the chapters it keeps, on the reader's code.
+async function Check() {
+  const { chapter, files, language } = yourCode;
+  Save();
+  Busy('check');
+  $('code-report').textContent = '';
+  $('code-report').dataset.failed = '';
+  const list = CGFS_CHECK.sections(chapter, files);
+  const totalCases = list.flatMap((section) => section.entries).reduce((n, entry) => n + entry.cases.length, 0);
+  const runner = new PageRunner({ language, code: yourCode.editor.getValue(), file: yourCode.file,
+    timeLimit: CGFS_CHECK.CASE_LIMIT, totalCases, onStatus: Status });
+  yourCode.running = runner;
+  const start = performance.now();
+  try {
+    const { lines, failed } = await CGFS_CHECK.check({ chapter, files, runner, file: yourCode.file });
+    $('code-report').textContent = lines.join('\n');
+    $('code-report').dataset.failed = failed ? 'yes' : 'no';
+    const checked = (Date.now() - runner.started) / 1000;
+    Status(`${failed ? 'Something to fix' : 'Every case passed'}: checked in ${checked.toFixed(2)} s` +
+           (language === 'python' ? ` (${((performance.now() - start) / 1000).toFixed(1)} s with starting Python)` : ''));
+  } catch (error) {
+    $('code-report').textContent = error instanceof CGFS_CHECK.CheckError ? error.message
+      : `The check could not run: ${error.message ?? error}`;
+    $('code-report').dataset.failed = 'yes';
+    Status(yourCode.running ? 'Your code could not be checked.' : 'Stopped.');
+  } finally {
+    runner.End();
+    yourCode.running = null;
+    $('code-report').dataset.done = 'yes';
+    Busy(null);
+  }
+}
+
+// The parameters, and their kinds, of every function a figure's recipe may call.
+function Kinds() {
+  const kinds = {};
+  for (const section of CGFS_CHECK.sections(yourCode.chapter, yourCode.files)) {
+    for (const entry of section.entries) kinds[entry.function] ??= entry.parameters;
+  }
+  return kinds;
+}
+
+async function Figures() {
+  if (!yourCode.figures) {
+    const live = $('live');
+    yourCode.figures = new FiguresWorker(live.dataset.module, CGFS_FIGURES_OF[live.dataset.chapter]);
+    const described = await yourCode.figures.Request({ op: 'describe' });
+    yourCode.figureIndex = Object.fromEntries(described.figures.map((figure, i) => [figure.name, i]));
+  }
+  return yourCode.figures;
+}
+
+function PutOn(canvas, pixels, width, height) {
+  canvas.width = width;
+  canvas.height = height;
+  canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(pixels), width, height), 0, 0);
+}
+
+// A ring around the first differing pixel, on a picture.
+function Mark(canvas, column, row) {
+  const context = canvas.getContext('2d');
+  context.lineWidth = Math.max(2, canvas.width / 150);
+  for (const [color, radius] of [['#fff', 14], ['#e00', 12]]) {
+    context.strokeStyle = color;
+    context.beginPath();
+    context.arc(column + 0.5, row + 0.5, radius * canvas.width / 600, 0, 2 * Math.PI);
+    context.stroke();
+  }
+}
+
+// Draw: the chosen figure with the reader's functions, beside ours and their difference,
+// and what cgfs-compare says of it.
+async function Draw() {
+  const name = $('code-figure').value;
+  const recipe = yourCode.drawings[name];
+  const { width, height } = recipe.given.canvas;
+  Save();
+  Busy('draw');
+  $('code-drawing').hidden = true;
+  $('code-comparison').textContent = '';
+  delete $('code-drawing').dataset.verdict;
+  const start = performance.now();
+  const drawn = await DrawWithCode({ language: yourCode.language, code: yourCode.editor.getValue(), file: yourCode.file,
+    functions: Object.keys(Kinds()), names: CGFS_CHECK.NAMES, recipe, kinds: Kinds(), seconds: kDrawLimit,
+    onStatus: Status, onProgress: (fraction) => Status(`drawing ${name} with your functions… ${Math.round(fraction * 100)} %`) });
+  try {
+    if (drawn.cancelled) {
+      Status('Stopped.');
+      return;
+    }
+    if (drawn.problem) {
+      Status(`${name} could not be drawn with your functions: ${drawn.problem}`);
+      return;
+    }
+    const seconds = (performance.now() - start) / 1000;
+    Status(`comparing with ours…`);
+    const figures = await Figures();
+    const index = yourCode.figureIndex[name];
+    const ours = await figures.Request({ op: 'draw', index, width, height, full: true });
+    const compared = await figures.Request({ op: 'compare', index, width, height, rgba: drawn.pixels });
+    if (ours.problem || compared.problem) {
+      Status(`${name} could not be compared: ${ours.problem ?? compared.problem}`);
+      return;
+    }
+    PutOn($('code-ours'), ours.pixels, width, height);
+    PutOn($('code-yours'), drawn.pixels, width, height);
+    PutOn($('code-difference'), compared.difference, width, height);
+    if (compared.column >= 0) {
+      Mark($('code-yours'), compared.column, compared.row);
+      Mark($('code-difference'), compared.column, compared.row);
+    }
+    $('code-comparison').textContent = `${name}, drawn with your functions, compared with ours:\n${compared.text}`;
+    $('code-drawing').dataset.verdict = compared.passed ? 'pass' : 'fail';
+    $('code-drawing').hidden = false;
+    $('code-drawing').drawn = drawn;  // the reader's picture, as drawn (the site's test reads it)
+    Status(`${name} drawn with your functions in ${seconds.toFixed(1)} s: ${compared.passed ? 'the same as ours' : 'not the same as ours'}`);
+  } finally {
+    Busy(null);
+  }
+}
+
+function Stop() {
+  yourCode.running?.End();
+  yourCode.running = null;
+  DrawWithCode.Cancel();
+}
+
+function Download() {
+  Save();
+  const link = document.createElement('a');
+  link.href = URL.createObjectURL(new Blob([yourCode.editor.getValue()], { type: 'text/plain' }));
+  link.download = yourCode.file;
+  link.click();
+  setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+}
+
+async function Open(file) {
+  const language = /\.py$/i.test(file.name) ? 'python' : /\.(m|c)?js$/i.test(file.name) ? 'javascript' : null;
+  if (!language) {
+    Status(`${file.name}: open a Python file (.py) or JavaScript (.js, .mjs, .cjs)`);
+    return;
+  }
+  if (file.size > 1 << 20) {
+    Status(`${file.name}: larger than 1 MB, not a chapter`);
+    return;
+  }
+  Save();
+  ShowCode(language, await file.text(), file.name);
+  Store(`${StorageKey(yourCode.chapter, language)}:file`, file.name);
+  Save();
+  Status(`opened ${file.name}`);
+}
+
+function StartOver() {
+  const { chapter, language } = yourCode;
+  if (!confirm(`Start ${chapter}'s ${language === 'python' ? 'Python' : 'JavaScript'} again? What is in the editor is lost ` +
+               '(Download keeps a copy).')) return;
+  Store(StorageKey(chapter, language), null);
+  Store(`${StorageKey(chapter, language)}:file`, null);
+  ShowCode(language, OpeningCode(language));
+  Status('started again');
+}
+
+function ChooseLanguage(language) {
+  Save();
+  Store('cgfs-code:language', language);
+  ShowCode(language, OpeningCode(language));
+  Status(language === 'python' ? 'Python runs in your browser (Pyodide); it starts when you first check or draw.' : '');
+}
+
+function ListDrawings() {
+  const names = Object.keys(yourCode.drawings);
+  for (const name of names) $('code-figure').append(new Option(name, name));
+  $('code-draw-group').hidden = names.length === 0;
+  $('code-no-drawing').hidden = names.length > 0;
+}
+
+function StartYourCode() {
+  yourCode.editor = CodeMirror.fromTextArea($('code-editor'), {
+    lineNumbers: true, indentUnit: 2, tabSize: 8, indentWithTabs: false, viewportMargin: 20,
+    extraKeys: { Tab: (editor) => editor.execCommand(editor.somethingSelected() ? 'indentMore' : 'insertSoftTab') },
+  });
+  let saving = null;
+  yourCode.editor.on('change', () => { clearTimeout(saving); saving = setTimeout(Save, 500); });
+  const language = Stored('cgfs-code:language') === 'python' ? 'python' : 'javascript';
+  ShowCode(language, OpeningCode(language));
+  ListDrawings();
+  $('code-language').addEventListener('change', (event) => ChooseLanguage(event.target.value));
+  $('code-check').addEventListener('click', Check);
+  $('code-draw').addEventListener('click', Draw);
+  $('code-stop').addEventListener('click', Stop);
+  $('code-download').addEventListener('click', Download);
+  $('code-open-button').addEventListener('click', () => $('code-open').click());
+  $('code-open').addEventListener('change', (event) => { if (event.target.files[0]) Open(event.target.files[0]); event.target.value = ''; });
+  $('code-start-over').addEventListener('click', StartOver);
+  window.addEventListener('beforeunload', Save);
+  // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
+  document.addEventListener('cgfs-tab', ({ detail }) => { if (detail === 'tab-code') yourCode.editor.refresh(); });
+  $('code-panel').dataset.ready = 'yes';
+}
+
+StartYourCode();
+})();
