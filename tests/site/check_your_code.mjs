@@ -13,11 +13,13 @@
 //    says, a syntax error names its line;
 //  - the business card's draw leaves the page answering clicks within 100 ms; on a
 //    1280 x 900 window every chapter page keeps its figure's caption and status in view;
+//  - docs/students.md's example of the page ("3. On the chapter's page") is what the page
+//    says;
 //  - nothing is asked of any machine but this one.
 // It prints how long each chapter's check took on the page.
 //
 // Usage: node check_your_code.mjs REPO SITE NATIVE_BUILD [--only PART ...]
-//   PART: carried, javascript, mistakes, loop, python, card, layout (all, without --only)
+//   PART: carried, javascript, mistakes, loop, python, card, layout, docs (all, without --only)
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync, spawnSync} from 'node:child_process';
 import {mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
@@ -104,12 +106,12 @@ function SameAsCgfsCompare(chapter, figure, drawn) {
   WritePng(file, width, height, Buffer.from(base64, 'base64'));
   const run = spawnSync(join(native, 'tools', 'cgfs-compare'), [`${chapter}/${figure}`, file], {encoding: 'utf8'});
   const theirs = run.stdout.split('\n').filter((line) => !/^(expected|actual|difference image):/.test(line) && line).join('\n');
-  const page = drawn.comparison.split('\n').slice(1).filter(Boolean).join('\n');
+  const page = drawn.comparison.split('\n').slice(1).filter((line) => line && !line.startsWith('your ')).join('\n');
   if (theirs !== page) Fail(`${chapter}/${figure}: the page says\n${page}\ncgfs-compare says\n${theirs}`);
 }
 
-function SameReport(what, page, cli) {
-  if (page !== cli) Fail(`${what}: the page's report\n${page}\nis not the command line's\n${cli}`);
+function SameReport(what, page, other, otherName = "the command line's") {
+  if (page !== other) Fail(`${what}: the page's report\n${page}\nis not ${otherName}\n${other}`);
 }
 
 // ---- The checks -------------------------------------------------------------------------
@@ -164,6 +166,17 @@ async function CheckMistakes() {
     }
   }
   console.log(`${count} catalogued mistakes, typed in, each failed its function with the command line's report`);
+  // A ViewportToCanvas that keeps the fractions passes its cases (compared truncated)
+  // and draws Figure 10-2 otherwise than ours: the page says why.
+  const ours = readFileSync(ReferenceOf('10-scene-rendering', 'javascript'), 'utf8');
+  await OpenPanel('10-scene-rendering', 'javascript');
+  await Type(ours.replace('{ x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) }', '{ x: x * Cw / Vw, y: y * Ch / Vh }'));
+  const drawn = await Draw('fig-10-2');
+  if (drawn.verdict !== 'fail' || !/your ProjectVertex returned the canvas point \(-37\.5, /.test(drawn.comparison)) {
+    Fail(`Figure 10-2 with canvas points not truncated: the page says\n${drawn.comparison}`);
+  } else {
+    console.log(`canvas points not truncated: "${drawn.comparison.split('\n').at(-2)}"`);
+  }
 }
 
 // The time from a click to the page handling it, in milliseconds, for clicks on the
@@ -271,8 +284,28 @@ async function CheckLayout() {
   console.log('every chapter page keeps its caption, status and figure in a 1280 x 900 window, at its top and bottom');
 }
 
+// docs/students.md's example: chapter 2's reference with y scaled by the width, checked
+// on the page, says what the example says, and its Figure 2-11 still passes.
+async function CheckDocsExample() {
+  const text = readFileSync(join(repo, 'docs', 'students.md'), 'utf8');
+  const example = /<!-- example: page y-scaled-by-width -->\n```\n([\s\S]*?)\n```/.exec(text)?.[1];
+  if (!example) {
+    Fail('docs/students.md has no example "page y-scaled-by-width"');
+    return;
+  }
+  await OpenPanel('02-basic-rays', 'javascript');
+  await OpenFile(ReferenceOf('02-basic-rays', 'javascript'));
+  await Type(readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8').replace('y * Vh / Ch', 'y * Vh / Cw'));
+  const {report} = await Check('docs/students.md\'s example');
+  SameReport('docs/students.md\'s example of the page', report, example, 'the example\'s');
+  const drawn = await Draw('fig-2-11');
+  if (drawn.verdict !== 'pass') Fail(`docs/students.md says fig-2-11 still passes with y scaled by the width: ${drawn.status}`);
+  console.log('docs/students.md\'s example of the page is what the page says');
+}
+
 const only = process.argv.includes('--only') ? process.argv.slice(process.argv.indexOf('--only') + 1) : null;
-const pythonDraws = {'02-basic-rays': 'fig-2-11', '03-light': 'fig-3-7-diffuse', '06-lines': 'fig-6-5'};
+const pythonDraws = {'02-basic-rays': 'fig-2-11', '03-light': 'fig-3-7-diffuse', '06-lines': 'fig-6-5',
+  '09-perspective-projection': 'fig-9-4', '10-scene-rendering': 'fig-10-3'};
 const parts = {
   carried: CheckCarriedForward,
   javascript: () => CheckReferences('javascript', Chapters(), () => true),
@@ -284,6 +317,7 @@ const parts = {
   },
   card: CheckCardResponsive,
   layout: CheckLayout,
+  docs: CheckDocsExample,
 };
 const browser = await Browser.Open(site);
 try {

@@ -76,7 +76,8 @@ const operations = {
     const pixels = new Uint8ClampedArray(drawn.toJs());
     drawn.destroy();
     const { width, height } = recipe.given.canvas;
-    return { answer: { pixels, width, height }, transfer: [pixels.buffer] };
+    const notes = JSON.parse(runner.page_draw_notes());
+    return { answer: { pixels, width, height, notes }, transfer: [pixels.buffer] };
   },
 };
 

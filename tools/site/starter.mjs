@@ -63,7 +63,7 @@ function comment(lines, language) {
 }
 
 // Words wrapped to lines of at most `width` characters.
-function wrapped(text, width = 84) {
+function wrapped(text, width = 70) {
   const lines = [''];
   for (const word of text.split(/\s+/).filter(Boolean)) {
     if (lines.at(-1).length + word.length + 1 > width && lines.at(-1)) lines.push('');

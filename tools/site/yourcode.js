@@ -195,7 +195,9 @@ async function Draw() {
       Mark($('code-yours'), compared.column, compared.row);
       Mark($('code-difference'), compared.column, compared.row);
     }
-    $('code-comparison').textContent = `${name}, drawn with your functions, compared with ours:\n${compared.text}`;
+    const notes = compared.passed ? [] : drawn.notes ?? [];
+    $('code-comparison').textContent = `${name}, drawn with your functions, compared with ours:\n${compared.text}` +
+      notes.map((note) => `${note}\n`).join('');
     $('code-drawing').dataset.verdict = compared.passed ? 'pass' : 'fail';
     $('code-drawing').hidden = false;
     $('code-drawing').drawn = drawn;  // the reader's picture, as drawn (the site's test reads it)

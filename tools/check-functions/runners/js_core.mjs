@@ -523,6 +523,7 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
   };
   const given = decoded(recipe.given);
   given.canvas = { ...given.canvas, PutPixel: put };
+  const notes = [];
   place(chapter, names, given, adapter, readNames);
   const theirs = (name) => {
     const fn = chapter.value(name);
@@ -543,10 +544,23 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
   } else {
     const call = (name, args) => theirs(name)(...(kinds[name] ?? []).map(([parameter, kind]) => {
       const value = args[parameter];
-      if (value && typeof value === "object" && "call" in value) return call(value.call, value.args);
-      return kind === "number" ? number(value) : adapter[kind](decoded(value), adapter);
+      if (!(value && typeof value === "object" && "call" in value)) {
+        return kind === "number" ? number(value) : adapter[kind](decoded(value), adapter);
+      }
+      const made = call(value.call, value.args);
+      if (kind === "point") notes.push(...fractionNote(value.call, made, notes));
+      return made;
     }));
     for (const [name, args] of recipe.calls) call(name, args);
   }
-  return { pixels, width, height };
+  return { pixels, width, height, notes };
+}
+
+// The line that says a function of the reader's made a canvas point that is not a whole
+// pixel, once: its drawing functions then draw from other end points than ours.
+function fractionNote(name, point, notes) {
+  const [x, y] = Array.isArray(point) ? point : [point?.x, point?.y];
+  if (notes.length > 0 || (Number.isInteger(x) && Number.isInteger(y))) return [];
+  return [`your ${name} returned the canvas point (${x}, ${y}): ours are whole pixels, truncated toward zero ` +
+    "(docs/conventions.md, \"Rounding in the rasterizer\"), and your drawing functions draw from other end points"];
 }

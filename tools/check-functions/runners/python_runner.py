@@ -719,6 +719,9 @@ def channel(value):
     return 255 if value >= 255 else math.floor(value + 0.5)
 
 
+notes = []  # what the last figure drawn has to say of the reader's points (fraction_note)
+
+
 def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
     """Draws a figure (tools/site/drawings.json) with the chapter's functions: its
     canvas, viewport and scene put where the chapter reads them, as a case's are, then a
@@ -740,6 +743,7 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
     given = decoded(recipe["given"])
     given["canvas"]["PutPixel"] = put
     chapter.place(given)
+    notes.clear()
 
     def theirs(name):
         function = getattr(chapter.main, name, None)
@@ -765,13 +769,35 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
             for parameter, kind in kinds.get(name, []):
                 value = args[parameter]
                 if isinstance(value, dict) and "call" in value:
-                    values.append(call(value["call"], value["args"]))
+                    made = call(value["call"], value["args"])
+                    if kind == "point" and not notes:
+                        notes.extend(fraction_note(value["call"], made))
+                    values.append(made)
                 else:
                     values.append(number(value) if kind == "number" else getattr(chapter.adapter, kind)(decoded(value)))
             return theirs(name)(*values)
         for name, args in recipe["calls"]:
             call(name, args)
     return bytes(pixels)
+
+
+def fraction_note(name, point):
+    """The line that says a function of the reader's made a canvas point that is not a
+    whole pixel: its drawing functions then draw from other end points than ours."""
+    try:
+        xy = plain(point, [16])
+    except ValueError:
+        return []
+    if isinstance(xy, dict):
+        x, y = xy.get("x"), xy.get("y")
+    elif isinstance(xy, list) and len(xy) >= 2:
+        x, y = xy[:2]
+    else:
+        return []
+    if all(isinstance(v, (int, float)) and float(v).is_integer() for v in (x, y)):
+        return []
+    return [f"your {name} returned the canvas point ({x}, {y}): ours are whole pixels, truncated toward zero "
+            "(docs/conventions.md, \"Rounding in the rasterizer\"), and your drawing functions draw from other end points"]
 
 
 # The chapter pages' runner (tools/site/python_worker.js runs this module in Pyodide, in a
@@ -816,6 +842,11 @@ def page_case(request):
         return encoded(run_case(json.loads(request), page_chapter))
     except BaseException as error:  # the reader's code made this one fail: said, one line
         return json.dumps({"raised": one_line(error)})
+
+
+def page_draw_notes():
+    """What the last figure drawn has to say of the reader's points, as JSON."""
+    return json.dumps(notes)
 
 
 def page_draw(recipe, kinds, progress):

@@ -107,9 +107,10 @@ function DrawShadedTriangle(P0, P1, P2, color) {
   }
 }
 
-// Listing 9-1: a viewport point to the canvas point it lands on.
+// Listing 9-1: a viewport point to the canvas point it lands on, a whole pixel (truncated
+// toward zero, as docs/conventions.md says of every canvas point).
 function ViewportToCanvas(x, y) {
-  return { x: x * Cw / Vw, y: y * Ch / Vh };
+  return { x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) };
 }
 
 // Listing 9-1: a point of the scene (an array [x, y, z]) projected onto the canvas.

@@ -5,9 +5,11 @@ page. Chapter 10's module carried forward, with SignedDistance (Listing 11-4), t
 segment's Intersection with a plane and ClipTriangle ("Clipping Triangles", Listing
 11-3), and the bounding sphere of "Clipping Whole Objects"."""
 
+import collections
 import math
 import types
 
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 
@@ -126,9 +128,10 @@ def DrawShadedTriangle(P0, P1, P2, color):
             PutPixel(x, y, shaded_color)
 
 
-# Listing 9-1: a viewport point to the canvas point it lands on.
+# Listing 9-1: a viewport point to the canvas point it lands on, a whole pixel (truncated
+# toward zero, as docs/conventions.md says of every canvas point).
 def ViewportToCanvas(x, y):
-    return (x * Cw / Vw, y * Ch / Vh)
+    return Point(int(x * Cw / Vw), int(y * Ch / Vh))
 
 
 # Listing 9-1: a point of the scene (x, y, z) projected onto the canvas.

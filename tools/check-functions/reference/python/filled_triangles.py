@@ -4,6 +4,9 @@ reference (tools/check-functions), one module as a reader writes it on a chapter
 page. Chapter 6's module carried forward, with DrawWireframeTriangle and
 DrawFilledTriangle (Listing 7-1)."""
 
+import collections
+
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 
 

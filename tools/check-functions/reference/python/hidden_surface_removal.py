@@ -8,9 +8,11 @@ which keeps the triangles that face the camera. depth_buffer[x][y] counts from t
 screen's top-left corner, as PutPixel maps a canvas point; the checker sets it, as it
 sets PutPixel."""
 
+import collections
 import math
 import types
 
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 depth_buffer = []  # depth_buffer[x][y]: 1/z of what is drawn there, 0 for nothing
@@ -135,9 +137,10 @@ def DrawShadedTriangle(P0, P1, P2, color):
             PutPixel(x, y, shaded_color)
 
 
-# Listing 9-1: a viewport point to the canvas point it lands on.
+# Listing 9-1: a viewport point to the canvas point it lands on, a whole pixel (truncated
+# toward zero, as docs/conventions.md says of every canvas point).
 def ViewportToCanvas(x, y):
-    return (x * Cw / Vw, y * Ch / Vh)
+    return Point(int(x * Cw / Vw), int(y * Ch / Vh))
 
 
 # Listing 9-1: a point of the scene (x, y, z) projected onto the canvas.

@@ -4,6 +4,9 @@
 Interpolate (Listing 6-1) and DrawLine (Listing 6-2), which draws with the book's
 PutPixel (the checker's, or the page's, in its place)."""
 
+import collections
+
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 
 

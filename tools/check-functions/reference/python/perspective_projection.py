@@ -4,6 +4,9 @@ checker's reference (tools/check-functions), one module as a reader writes it on
 chapter's page. Chapter 8's module carried forward, with the viewport,
 ViewportToCanvas and ProjectVertex (Listing 9-1)."""
 
+import collections
+
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 
@@ -122,9 +125,10 @@ def DrawShadedTriangle(P0, P1, P2, color):
             PutPixel(x, y, shaded_color)
 
 
-# Listing 9-1: a viewport point to the canvas point it lands on.
+# Listing 9-1: a viewport point to the canvas point it lands on, a whole pixel (truncated
+# toward zero, as docs/conventions.md says of every canvas point).
 def ViewportToCanvas(x, y):
-    return (x * Cw / Vw, y * Ch / Vh)
+    return Point(int(x * Cw / Vw), int(y * Ch / Vh))
 
 
 # Listing 9-1: a point of the scene (x, y, z) projected onto the canvas.

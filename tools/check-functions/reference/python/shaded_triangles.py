@@ -4,6 +4,9 @@ reference (tools/check-functions), one module as a reader writes it on a chapter
 page. Chapter 7's module carried forward, with DrawShadedTriangle (Listing 8-1): each
 vertex has an intensity h, interpolated along the edges and across each row."""
 
+import collections
+
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 
 

@@ -5,9 +5,11 @@ page. Chapter 13's module carried forward, with the nearest texel ("Painting a
 Crate") and GetTexel's bilinear filtering ("Bilinear Filtering"); texture[i][j] is
 column i, row j, and a texel past the last column or row is the last one."""
 
+import collections
 import math
 import types
 
+Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: its intensity
 Cw, Ch = 600, 600  # the canvas
 Vw, Vh, d = 1, 1, 1  # the viewport, at distance d
 depth_buffer = []  # depth_buffer[x][y]: 1/z of what is drawn there, 0 for nothing
@@ -91,9 +93,10 @@ def DrawFilledTriangle(P0, P1, P2, z0, z1, z2, color):
                 depth_buffer[sx][sy] = iz_segment[x - x_l]
 
 
-# Listing 9-1: a viewport point to the canvas point it lands on.
+# Listing 9-1: a viewport point to the canvas point it lands on, a whole pixel (truncated
+# toward zero, as docs/conventions.md says of every canvas point).
 def ViewportToCanvas(x, y):
-    return (x * Cw / Vw, y * Ch / Vh)
+    return Point(int(x * Cw / Vw), int(y * Ch / Vh))
 
 
 # Listing 9-1: a point of the scene (x, y, z) projected onto the canvas.
