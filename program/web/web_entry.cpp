@@ -52,6 +52,17 @@ const char* Text(std::string value) {
   return text.c_str();
 }
 
+// An image's RGB bytes into `pixels` as RGBA, opaque, as a canvas's ImageData holds them.
+void KeepAsRgba(const std::vector<std::uint8_t>& rgb) {
+  pixels.resize(rgb.size() / 3 * 4);
+  for (std::size_t from = 0, to = 0; from < rgb.size(); from += 3, to += 4) {
+    pixels[to] = rgb[from];
+    pixels[to + 1] = rgb[from + 1];
+    pixels[to + 2] = rgb[from + 2];
+    pixels[to + 3] = 255;
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -120,14 +131,7 @@ EMSCRIPTEN_KEEPALIVE int DrawFigure(int index, int width, int height) {
   try {
     const cgfs::Canvas canvas =
         cgfs::RenderFigure(*figure, width, height, figure->draw_from ? view : cgfs::View{});
-    const auto& rgb = canvas.GetImage().Bytes();
-    pixels.resize(rgb.size() / 3 * 4);
-    for (std::size_t from = 0, to = 0; from < rgb.size(); from += 3, to += 4) {
-      pixels[to] = rgb[from];
-      pixels[to + 1] = rgb[from + 1];
-      pixels[to + 2] = rgb[from + 2];
-      pixels[to + 3] = 255;
-    }
+    KeepAsRgba(canvas.GetImage().Bytes());
     return 1;
   } catch (const std::exception& error) {
     last_error = error.what();
@@ -162,14 +166,7 @@ EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height, con
       }
     }
     comparison = cgfs::CompareImages(ours.GetImage(), theirs);
-    const auto& rgb = comparison.difference.Bytes();
-    pixels.resize(rgb.size() / 3 * 4);
-    for (std::size_t from = 0, to = 0; from < rgb.size(); from += 3, to += 4) {
-      pixels[to] = rgb[from];
-      pixels[to + 1] = rgb[from + 1];
-      pixels[to + 2] = rgb[from + 2];
-      pixels[to + 3] = 255;
-    }
+    KeepAsRgba(comparison.difference.Bytes());
     return comparison.passed ? 1 : 0;
   } catch (const std::exception& error) {
     last_error = error.what();
