@@ -12,7 +12,8 @@ namespace {
 constexpr int kBins = 16;
 constexpr int kMaxLeaf = 8;
 // So few objects are a leaf whatever the heuristic says: a scene of a few objects is
-// then one leaf, which Search tests as the plain loop does, with no box.
+// then one leaf, which PrepareScene does not keep (the plain loop does the same, with
+// no box to test).
 constexpr int kSmallLeaf = 4;
 constexpr double kBoxTestCost = 1;  // relative to one object test
 // Deeper than this (only objects nested like Russian dolls get there), groups are
@@ -136,15 +137,14 @@ int Bvh::Split(int first, int count, int depth, const Box& box, const Box& centr
 // ray's side of the split goes first, since its hits are likely the nearer ones, which
 // then rule out the boxes of the other that lie beyond them; the other waits on the
 // stack. With `any`, stops at the first hit.
-Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& object,
-                Tests& tests) const {
+Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& object) const {
   Hit best;
   best.t = t_max;  // what the boxes are tested against; narrows with each hit
   object = -1;
   // Tests a leaf's objects; true to stop (with `any`, at the first hit).
   const auto test_leaf = [&](const Node& leaf) {
     for (int i = leaf.first; i < leaf.first + leaf.count; ++i) {
-      ++tests.objects;
+      cgfs::Tally(kObjectTests);
       const int candidate = order_[i];
       const Hit hit = objects_[candidate]->Intersect(ray, t_min, best.t);
       // Within [t_min, best.t]: nearer, or as near and first in the scene (or the first).
@@ -158,10 +158,6 @@ Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& objec
     }
     return false;
   };
-  if (nodes_.size() == 1) {  // one leaf: the plain loop, with no box to test
-    test_leaf(nodes_[0]);
-    return object >= 0 ? best : Hit{};
-  }
   const Vec3 inv_D = 1.0 / ray.D;
   int stack[64];
   int size = 0;
@@ -169,7 +165,7 @@ Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& objec
   while (!nodes_.empty()) {
     const Node& current = nodes_[node];
     double t_enter = 0;
-    ++tests.boxes;
+    cgfs::Tally(kBoxTests);
     if (RayHitsBox(current.box, ray.O, ray.D, inv_D, t_min, best.t, t_enter)) {
       if (current.count == 0) {
         const bool second_first = ray.D[current.axis] < 0;
@@ -189,12 +185,10 @@ Hit Bvh::Search(const Ray& ray, double t_min, double t_max, bool any, int& objec
   return object >= 0 ? best : Hit{};
 }
 
-Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object, Tests* tests) const {
-  Tests uncounted;
-  return Search(ray, t_min, t_max, false, object, tests != nullptr ? *tests : uncounted);
+Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
+  return Search(ray, t_min, t_max, false, object);
 }
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
-  Tests uncounted;
-  return Search(ray, t_min, t_max, true, object, uncounted).primitive != nullptr;
+  return Search(ray, t_min, t_max, true, object).primitive != nullptr;
 }

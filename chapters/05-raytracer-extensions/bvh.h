@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "cgfs/tally.h"
 #include "objects.h"
 
 // Whether O + tD, t in [t_min, t_max], passes through the box; sets t_enter to the
@@ -36,22 +37,20 @@ inline bool RayHitsBox(const Box& box, const Vec3& O, const Vec3& D, const Vec3&
   return t_min <= t_max;
 }
 
+// The work of a search, counted box by box and object by object: the cost view of the
+// tests per camera ray (cost.h), the tests, and the chapter's README's numbers.
+inline constexpr cgfs::Counter kBoxTests{"box tests"};
+inline constexpr cgfs::Counter kObjectTests{"object tests"};
+
 class Bvh {
  public:
   // Built once per scene over its objects, which it refers to by index.
   explicit Bvh(const std::vector<std::shared_ptr<Object>>& objects);
 
-  // The work of one search, counted (tests and the chapter's README use it).
-  struct Tests {
-    long boxes = 0;
-    long objects = 0;
-  };
-
   // The nearest hit in [t_min, t_max], as the loop over every object finds it: on a
   // tie in t, the object that comes first in the scene. `object` is the index of
-  // the scene object hit, or -1. Counts its work into `tests` if given.
-  Hit Closest(const Ray& ray, double t_min, double t_max, int& object,
-              Tests* tests = nullptr) const;
+  // the scene object hit, or -1.
+  Hit Closest(const Ray& ray, double t_min, double t_max, int& object) const;
   // Whether anything is hit in [t_min, t_max]; stops at the first hit found.
   bool Any(const Ray& ray, double t_min, double t_max, int& object) const;
 
@@ -69,7 +68,7 @@ class Bvh {
   void Build(int first, int count, const std::vector<Box>& boxes, int depth);
   int Split(int first, int count, int depth, const Box& box, const Box& centres,
             const std::vector<Box>& boxes, int& split_axis);
-  Hit Search(const Ray& ray, double t_min, double t_max, bool any, int& object, Tests& tests) const;
+  Hit Search(const Ray& ray, double t_min, double t_max, bool any, int& object) const;
 
   std::vector<const Object*> objects_;  // the scene's, in its order
   std::vector<int> order_;              // their indices, grouped leaf by leaf

@@ -6,6 +6,8 @@
 
 #include <functional>
 
+#include "cgfs/canvas.h"
+
 // A rectangle of canvas coordinates: x in [x_begin, x_end), y in [y_begin, y_end).
 struct Tile {
   int x_begin, x_end, y_begin, y_end;
@@ -17,3 +19,9 @@ inline constexpr int kTileSide = 16;
 // workers (1: all on this thread, in order). draw_tile must only write its own pixels.
 void ForEachTile(int width, int height, int threads,
                  const std::function<void(const Tile&)>& draw_tile);
+
+// Calls draw(x, y) once for every pixel of the canvas, tile by tile as above. While a
+// pixel is drawn it is its thread's current pixel (cgfs::CurrentPixel), so that the
+// work counted with cgfs::Tally (tally.h) lands on it.
+void ForEachPixel(const cgfs::Canvas& canvas, int threads,
+                  const std::function<void(int x, int y)>& draw);

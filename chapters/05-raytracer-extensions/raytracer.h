@@ -11,6 +11,7 @@
 #include "cgfs/canvas.h"
 #include "cgfs/color.h"
 #include "cgfs/math.h"
+#include "cgfs/tally.h"
 #include "cgfs/view.h"
 #include "objects.h"
 #include "optimizations.h"
@@ -58,10 +59,6 @@ struct Scene {
   // bounding-volume hierarchy when that is one of them.
   Optimizations optimizations;
   std::shared_ptr<const Bvh> bvh;
-
-  // If set, TraceRay adds one for every ray it traces, the camera's and those it
-  // spawns (a cost view counts them per pixel, cost.h).
-  long* traced_rays = nullptr;
 
   template <typename Shape>
   void Add(Shape shape) {
@@ -112,7 +109,9 @@ double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s, co
 // Listing 4-4: the closest object's lit colour, blended with what its mirror image
 // shows and, for a transparent one, what is seen through it (traced recursively, at
 // most recursion_depth more bounces); or the background. medium_index is the
-// refractive index of the material the ray travels in ("Refraction").
+// refractive index of the material the ray travels in ("Refraction"). Each ray it
+// traces, the camera's and those it spawns, is counted (a cost view, cost.h).
+inline constexpr cgfs::Counter kTracedRays{"rays traced"};
 Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, int recursion_depth,
                const Scene& scene, double medium_index = kAirIndex);
 

@@ -1,8 +1,7 @@
 // Fewer rays than pixels ("Subsampling") and more ("Supersampling").
 #pragma once
 
-#include <vector>
-
+#include "cgfs/tally.h"
 #include "raytracer.h"
 
 // "Subsampling", a main loop of its own beside RenderScene: traces the pixels with
@@ -10,12 +9,9 @@
 // sides (all four around, for a pixel in the middle of a square) hit the same object,
 // only that object is intersected, and when they all saw the background, so does the
 // pixel. Everywhere else the pixel is traced. Approximate: an object thinner than two
-// pixels can vanish. With the other optimisations chosen. If `searches` is given
-// (one count per pixel, cost.h), each pixel's is set to the camera rays searched
-// through the whole scene for it: 1 where it was traced, 0 where it was filled in.
+// pixels can vanish. With the other optimisations chosen.
 void RenderSceneSubsampled(const Scene& scene, int recursion_depth, Canvas& canvas,
-                           const Optimizations& optimizations,
-                           std::vector<long>* searches = nullptr);
+                           const Optimizations& optimizations);
 
 // The main loop the optimisations choose: RenderSceneSubsampled when they ask for
 // subsampling, else RenderScene (what --optimizations does to every figure).
@@ -31,8 +27,12 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
 // The adaptive variant: one ray per pixel, then 4 x 4 rays only for the pixels
 // whose ray hits another object than a neighbour's, or whose colour differs from a
 // neighbour's by more than kAdaptiveThreshold in a channel. Returns how many pixels
-// were subdivided; if `rays` is given (one count per pixel, cost.h), sets each pixel's
-// to the camera rays traced for it, 1 or 1 + 16.
+// were subdivided.
 inline constexpr double kAdaptiveThreshold = 24;
 long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
-                         const Optimizations& optimizations, std::vector<long>* rays = nullptr);
+                         const Optimizations& optimizations);
+
+// The camera rays these functions search the whole scene with, counted (a cost view,
+// cost.h): subsampling's traced pixels and those whose neighbours disagree, each
+// sample of supersampling.
+inline constexpr cgfs::Counter kCameraRays{"camera rays"};

@@ -206,21 +206,25 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
 cgfs::Figure OverdrawFigure(const std::string& figure, const std::string& caption,
                             std::function<Scene()> scene, const HiddenSurfaceRemoval& method,
                             long scale_max) {
-  const auto draw = [method, scale_max](const Scene& drawn, Canvas& canvas) {
+  const cgfs::CostView cost;
+  const auto draw = [method, scale_max, cost](const Scene& drawn, Canvas& canvas) {
     std::vector<long> writes;
     {
       const cgfs::Tallying tallying(cgfs::kPixelsPut, canvas.Width(), canvas.Height());
       RenderScene(drawn, canvas, method);
       writes = tallying.PerPixel();
     }
-    cgfs::DrawCost(canvas, writes, scale_max);
+    cost.Draw(canvas, writes, scale_max);
   };
-  return {figure + "-overdraw", caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
-          [scene, draw](Canvas& canvas, const cgfs::View& view) {
-            Scene moved = scene();
-            moved.camera = MovedCamera(moved.camera, view);
-            draw(moved, canvas);
-          }};
+  cgfs::Figure overdraw{figure + "-overdraw", caption,
+                        [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
+                        [scene, draw](Canvas& canvas, const cgfs::View& view) {
+                          Scene moved = scene();
+                          moved.camera = MovedCamera(moved.camera, view);
+                          draw(moved, canvas);
+                        }};
+  overdraw.measured = cost.Measured();
+  return overdraw;
 }
 
 }  // namespace
@@ -283,16 +287,12 @@ std::vector<cgfs::Figure> Figures() {
       SceneFigure("open-box-culled",
                   "the open box culled as if it were closed: its inside faces are missing",
                   SceneOpenBoxSaidClosed, culled),
-      OverdrawFigure(
-          "painters-algorithm-cubes",
-          "the painter's overdraw, pixels written per pixel on a scale to 5: 200 519 in all, "
-          "at most 5",
-          SceneTransformedCubes, painters, kOverdrawScale),
-      OverdrawFigure("fig-12-4-depth-buffer",
-                     "the depth buffer's overdraw: 137 388 in all, at most 3",
-                     SceneTransformedCubes, depth, kOverdrawScale),
-      OverdrawFigure("back-face-culling",
-                     "the overdraw with back faces culled: 98 818 in all, at most 2",
+      OverdrawFigure("painters-algorithm-cubes",
+                     "the painter's overdraw, pixels written per pixel on a scale to 5",
+                     SceneTransformedCubes, painters, kOverdrawScale),
+      OverdrawFigure("fig-12-4-depth-buffer", "the depth buffer's overdraw", SceneTransformedCubes,
+                     depth, kOverdrawScale),
+      OverdrawFigure("back-face-culling", "the overdraw with back faces culled",
                      SceneTransformedCubes, culled, kOverdrawScale),
   };
   for (const char* name :

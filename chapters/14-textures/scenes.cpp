@@ -231,15 +231,18 @@ std::vector<long> MipLevelsRead(Scene scene, const Shading& shading, Canvas& can
 // the cost ramp from 0 to `scale_max` (program/cost_view.h).
 cgfs::Figure MipLevelFigure(const std::string& name, const std::string& caption,
                             std::function<Scene()> scene, const Shading& shading, long scale_max) {
-  const auto draw = [shading, scale_max](Scene drawn, Canvas& canvas) {
-    cgfs::DrawCost(canvas, MipLevelsRead(std::move(drawn), shading, canvas), scale_max);
+  const cgfs::CostView cost;
+  const auto draw = [shading, scale_max, cost](Scene drawn, Canvas& canvas) {
+    cost.Draw(canvas, MipLevelsRead(std::move(drawn), shading, canvas), scale_max);
   };
-  return {name, caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
-          [scene, draw](Canvas& canvas, const cgfs::View& view) {
-            Scene moved = scene();
-            moved.camera = MovedCamera(moved.camera, view);
-            draw(std::move(moved), canvas);
-          }};
+  cgfs::Figure figure{name, caption, [scene, draw](Canvas& canvas) { draw(scene(), canvas); },
+                      [scene, draw](Canvas& canvas, const cgfs::View& view) {
+                        Scene moved = scene();
+                        moved.camera = MovedCamera(moved.camera, view);
+                        draw(std::move(moved), canvas);
+                      }};
+  figure.measured = cost.Measured();
+  return figure;
 }
 
 }  // namespace
@@ -301,7 +304,7 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
                   crates, Shading{}),
       MipLevelFigure("crates-trilinear-mip-levels",
                      "the mip level each pixel of the crates reads, the nearer of trilinear's two, "
-                     "0 to 8: 131 055 in all, at most 5",
+                     "0 to 8",
                      crates, WithTexturing(kPerspectiveCorrect, kMipmap), 8),
   };
   cgfs::SetCostView(figures, "crates-trilinear", "crates-trilinear-mip-levels");

@@ -31,7 +31,7 @@ class CanvasGrid {
   // Every cell set to `value`.
   void Fill(const T& value) { cells_.assign(cells_.size(), value); }
 
-  // Where pixel (x, y) is in memory order, row by row from the top; empty off the canvas.
+ private:
   std::optional<std::size_t> Index(int x, int y) const {
     const std::optional<cgfs::ScreenPoint> screen = canvas_->ToScreen(x, y);
     if (!screen) {
@@ -41,7 +41,6 @@ class CanvasGrid {
            static_cast<std::size_t>(screen->column);
   }
 
- private:
   const cgfs::Canvas* canvas_;
   std::vector<T> cells_;
 };

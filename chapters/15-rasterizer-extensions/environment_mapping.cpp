@@ -2,11 +2,24 @@
 
 #include <cmath>
 
-#include "scene_rendering.h"
+#include "view_rendering.h"
 
 // Chapter 4, "Reflections".
 Vec3 ReflectRay(const Vec3& R, const Vec3& N) {
   return 2.0 * N * glm::dot(N, R) - R;
+}
+
+Color MixReflection(const Color& local, const Vec3& P, const Vec3& N, const CubeMap* environment,
+                    double reflective, bool first_pass, const glm::dmat4& camera_to_world) {
+  if (!environment || reflective == 0) {
+    return local;
+  }
+  Color reflected(0, 0, 0);
+  if (first_pass) {
+    const Vec3 R = ReflectRay(-P, N);
+    reflected = SampleCubeMap(*environment, Vec3(camera_to_world * glm::dvec4(R, 0.0)));
+  }
+  return (1 - reflective) * local + reflective * reflected;
 }
 
 Color SampleCubeMap(const CubeMap& cube_map, const Vec3& R) {
@@ -30,7 +43,7 @@ CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
     const auto face = static_cast<CubeFace>(f);
     surroundings.camera = {centre, CubeFaceOrientation(face)};
     Canvas canvas(size, size);
-    RenderView(surroundings, {}, CubeFaceClippingPlanes(d, size), canvas, {}, {});
+    RenderView(surroundings, CubeFaceClippingPlanes(d, size), canvas, {});
     cube_map.faces[static_cast<std::size_t>(f)] = TextureFromImage(canvas.GetImage());
   }
   return cube_map;

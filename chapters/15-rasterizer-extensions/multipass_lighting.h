@@ -8,6 +8,7 @@
 
 #include "canvas_grid.h"
 #include "depth_buffer.h"
+#include "shading.h"
 #include "stencil_buffer.h"
 
 // A floating-point colour per pixel of the canvas: the sum of the passes so far.
@@ -60,3 +61,17 @@ bool PassDepthTest(const Pass& pass, DepthBuffer& depth_buffer, int x, int y, do
 
 // The pixel's colour, where the pass sends it.
 void PassWrite(const Pass& pass, Canvas& canvas, int x, int y, const Color& color);
+
+// A frame drawn in a pass: the pass decides which pixels it draws and where their
+// colours go.
+struct PassFrame : Frame {
+  PassFrame(Canvas& target, DepthBuffer& depths, const Viewport& shown, const Pass& drawn)
+      : Frame(target, depths, shown), pass(drawn) {}
+
+  Pass pass;
+
+  bool TestAndSet(int x, int y, double inv_z) override {
+    return PassDepthTest(pass, depth_buffer, x, y, inv_z);
+  }
+  void Write(int x, int y, const Color& color) override { PassWrite(pass, canvas, x, y, color); }
+};

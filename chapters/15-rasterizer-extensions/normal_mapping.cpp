@@ -27,6 +27,15 @@ Vec3 ApplyNormalMap(const Vec3& n, const TangentBasis& basis, const Vec3& N) {
   return glm::normalize(T * n.x + B * n.y + N * n.z);
 }
 
+Vec3 BendNormal(const Vec3& N, const Texture* normal_map, const glm::dvec2& uv,
+                const TangentBasis& tangents) {
+  if (!normal_map) {
+    return N;
+  }
+  const Color texel = GetTexel(*normal_map, uv.x * normal_map->width, uv.y * normal_map->height);
+  return ApplyNormalMap(DecodeNormal(texel), tangents, N);
+}
+
 // Each bump is a pyramid over its cell, h = k (1 - |x| - |y|) with x and y in [-1, 1]
 // across the cell; the normal of a height field h(u, v) in tangent space is
 // (-dh/du, -dh/dv, 1), normalised, here (k sign(x), k sign(y), 1) on the four faces.

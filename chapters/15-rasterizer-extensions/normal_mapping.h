@@ -33,6 +33,12 @@ TangentBasis ComputeTangentBasis(const std::array<Vec3, 3>& P, const std::array<
 // to the unit normal N and to each other, then normalize(T n.x + B n.y + N n.z).
 Vec3 ApplyNormalMap(const Vec3& n, const TangentBasis& basis, const Vec3& N);
 
+// The unit normal N bent by `normal_map` at texture coordinates (u, v), if there is a
+// map (else N itself). The map is read as a colour texture is, texel (i, j) at the point
+// (i, j).
+Vec3 BendNormal(const Vec3& N, const Texture* normal_map, const glm::dvec2& uv,
+                const TangentBasis& tangents);
+
 // The project's normal map: size x size texels of bumps x bumps diamond-shaped
 // pyramids on a flat ground, in the encoding above.
 Texture MakeDiamondNormalMap(int size, int bumps);

@@ -1,5 +1,6 @@
 #include "shading.h"
 
+#include "cgfs/tally.h"
 #include "triangle_walker.h"
 
 Vec3 ComputeTriangleNormal(const Vec3& A, const Vec3& B, const Vec3& C) {
@@ -99,59 +100,6 @@ Color SurfaceColor(const Surface& surface, const Attributes& attributes,
   return SampleTexture(*surface.texture, uv.x, uv.y, rho, texturing.filter);
 }
 
-Vec3 BendNormal(const Vec3& N, const Surface& surface, const glm::dvec2& uv,
-                const TangentBasis& tangents) {
-  if (!surface.normal_map) {
-    return N;
-  }
-  const Texture& map = *surface.normal_map;
-  const Color texel = GetTexel(map, uv.x * map.width, uv.y * map.height);
-  return ApplyNormalMap(DecodeNormal(texel), tangents, N);
-}
-
-void LightVisibilities(const Vec3& P, const Vec3& N, const Lighting& lighting,
-                       const glm::dmat4& camera_to_world, std::vector<double>& visibility) {
-  visibility.clear();
-  if (lighting.shadow_maps.empty()) {
-    return;
-  }
-  const Vec3 P_world = cgfs::ToCartesian(camera_to_world * glm::dvec4(P, 1.0));
-  const Vec3 N_world = Vec3(camera_to_world * glm::dvec4(N, 0.0));
-  for (const ShadowMap* shadow_map : lighting.shadow_maps) {
-    visibility.push_back(shadow_map ? LightVisibility(*shadow_map, P_world, N_world) : 1.0);
-  }
-}
-
-void RecordShadowEntry(const Vec3& P, const Lighting& lighting, int x, int y, Frame& frame) {
-  const std::optional<cgfs::ScreenPoint> screen = frame.canvas.ToScreen(x, y);
-  if (frame.shadow_entries == nullptr || !screen) {
-    return;
-  }
-  for (const ShadowMap* shadow_map : lighting.shadow_maps) {
-    if (shadow_map != nullptr && !shadow_map->views.empty()) {
-      const Vec3 P_world = cgfs::ToCartesian(frame.camera_to_world * glm::dvec4(P, 1.0));
-      const std::optional<long> entry = ShadowMapEntry(*shadow_map, P_world);
-      (*frame.shadow_entries)[static_cast<std::size_t>(screen->row) * frame.canvas.Width() +
-                              static_cast<std::size_t>(screen->column)] = entry ? *entry : -1;
-      return;
-    }
-  }
-}
-
-Color MixReflection(const Color& local, const Vec3& P, const Vec3& N, const Surface& surface,
-                    const Frame& frame) {
-  if (!surface.environment || surface.reflective == 0) {
-    return local;
-  }
-  Color reflected(0, 0, 0);
-  if (!frame.pass.sum || frame.pass.first) {
-    const Vec3 R = ReflectRay(-P, N);
-    reflected =
-        SampleCubeMap(*surface.environment, Vec3(frame.camera_to_world * glm::dvec4(R, 0.0)));
-  }
-  return (1 - surface.reflective) * local + surface.reflective * reflected;
-}
-
 std::array<Vec3, 3> CornerNormals(const std::array<ShadedCorner, 3>& corners, NormalSource source) {
   if (source == NormalSource::kTriangle) {
     const Vec3 N =
@@ -195,6 +143,7 @@ template <typename Shade>
 void FillTriangle(const std::array<WalkerCorner<Attributes>, 3>& corners, Frame& frame,
                   const Shade& shade) {
   WalkTriangle(corners, [&](int x, int y, const Attributes& attributes) {
+    const cgfs::CurrentPixel current(x, y);  // where the work of chapter 15's stages is counted
     if (frame.TestAndSet(x, y, attributes.inv_z)) {
       frame.Write(x, y, shade(x, y, attributes));
     }
@@ -237,33 +186,27 @@ void ShadeGouraud(const std::array<ShadedCorner, 3>& corners, const Surface& sur
 // the light computed at every pixel. The interpolated normal is shorter than 1
 // between the corners, so it is normalised again.
 void ShadePhong(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
-                const Lighting& lighting, Frame& frame) {
+                const Lighting& lighting, Frame& frame, const PhongSteps& steps) {
   const std::array<Vec3, 3> normals = CornerNormals(corners, lighting.shading.normals);
   const Texturing& texturing = lighting.shading.texturing;
   const CarriedGradients gradients = ComputeCarriedGradients(corners, texturing);
-  const TangentBasis tangents =
-      ComputeTangentBasis({corners[0].position, corners[1].position, corners[2].position},
-                          {corners[0].uv, corners[1].uv, corners[2].uv});
-  std::vector<double> visibility;
-  FillTriangle(WalkerCorners(corners, {}, normals, texturing), frame,
-               [&](int x, int y, const Attributes& a) {
-                 const Vec3 P = UnProjectVertex(x, y, a.inv_z, frame.canvas, frame.viewport);
-                 const glm::dvec2 uv = TextureCoordinates(a, texturing);
-                 const Vec3 N = BendNormal(glm::normalize(a.normal), surface, uv, tangents);
-                 LightVisibilities(P, N, lighting, frame.camera_to_world, visibility);
-                 if (frame.shadow_entries != nullptr) {
-                   RecordShadowEntry(P, lighting, x, y, frame);
-                 }
-                 const double illumination =
-                     ComputeLighting(P, N, -P, surface.specular, lighting.lights,
-                                     lighting.shading.terms, visibility);
-                 const Color local = SurfaceColor(surface, a, gradients, texturing) * illumination;
-                 return MixReflection(local, P, N, surface, frame);
-               });
+  PhongPixel pixel;
+  FillTriangle(
+      WalkerCorners(corners, {}, normals, texturing), frame,
+      [&](int x, int y, const Attributes& a) {
+        pixel.P = UnProjectVertex(x, y, a.inv_z, frame.canvas, frame.viewport);
+        pixel.N = glm::normalize(a.normal);
+        pixel.uv = TextureCoordinates(a, texturing);
+        steps.Before(pixel);
+        return steps.After(
+            pixel, SurfaceColor(surface, a, gradients, texturing) *
+                       ComputeLighting(pixel.P, pixel.N, -pixel.P, surface.specular,
+                                       lighting.lights, lighting.shading.terms, pixel.visibility));
+      });
 }
 
 void ShadeTriangle(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
-                   const Lighting& lighting, Frame& frame) {
+                   const Lighting& lighting, Frame& frame, const PhongSteps& steps) {
   switch (lighting.shading.model) {
     case ShadingModel::kFlat:
       ShadeFlat(corners, surface, lighting, frame);
@@ -272,7 +215,7 @@ void ShadeTriangle(const std::array<ShadedCorner, 3>& corners, const Surface& su
       ShadeGouraud(corners, surface, lighting, frame);
       break;
     case ShadingModel::kPhong:
-      ShadePhong(corners, surface, lighting, frame);
+      ShadePhong(corners, surface, lighting, frame, steps);
       break;
   }
 }

@@ -5,17 +5,12 @@
 #include <array>
 #include <vector>
 
-#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include "depth_buffer.h"
-#include "environment_mapping.h"
 #include "lighting.h"
 #include "mipmap.h"
-#include "multipass_lighting.h"
-#include "normal_mapping.h"
 #include "projection.h"
-#include "shadow_mapping.h"
 
 // "Flat Shading", "Gouraud Shading", "Phong Shading", in order of cost and quality.
 enum class ShadingModel { kFlat, kGouraud, kPhong };
@@ -48,50 +43,38 @@ struct Shading {
 };
 
 // What lighting a triangle needs besides the triangle: the scene's lights in camera
-// space, the shading to use, and ("Shadow Mapping") each light's shadow map, in world
-// space: none at all, or one per light (nullptr for a light that has none).
+// space, and the shading to use.
 struct Lighting {
   std::vector<Light> lights;
   Shading shading;
-  std::vector<const ShadowMap*> shadow_maps;
 };
 
 // What a triangle is made of: its colour, how shiny it is (chapter 3's specular
-// exponent, -1 for matte), the texture that takes the colour's place, if any, the
-// normal map that bends its normals, if any, and how much it reflects (0..1) of the
-// environment's cube map, if it has one.
+// exponent, -1 for matte), and the texture that takes the colour's place, if any.
 struct Surface {
   Color color{0, 0, 0};
   double specular = -1;
   const MipmappedTexture* texture = nullptr;
-  const Texture* normal_map = nullptr;
-  double reflective = 0;
-  const CubeMap* environment = nullptr;
 };
 
 // Where shaded pixels go: the canvas, behind a 1/z depth buffer, and the viewport
-// that maps the scene onto it; where the camera is in the world (the shadow maps and
-// cube maps are made in world space); and the pass being drawn ("Stencil Shadows").
+// that maps the scene onto it. A pass of multi-pass lighting sends them elsewhere
+// (multipass_lighting.h's PassFrame).
 struct Frame {
   Frame(Canvas& target, DepthBuffer& depths, const Viewport& shown)
       : canvas(target), depth_buffer(depths), viewport(shown) {}
+  virtual ~Frame() = default;
 
   Canvas& canvas;
   DepthBuffer& depth_buffer;
   Viewport viewport;
-  glm::dmat4 camera_to_world{1.0};
-  Pass pass;
-  // If set, the entry of the first light's shadow map that each shaded pixel's lookup
-  // reads, row by row from the top (RecordShadowEntry), for a cost view.
-  std::vector<long>* shadow_entries = nullptr;
 
   // "Depth Buffering": whether the point at 1/z = inv_z is closer than what pixel
-  // (x, y) shows (and if so, it is now what the pixel shows); in a later pass,
-  // whether the pass may draw the pixel (PassDepthTest).
-  bool TestAndSet(int x, int y, double inv_z) {
-    return PassDepthTest(pass, depth_buffer, x, y, inv_z);
+  // (x, y) shows (and if so, it is now what the pixel shows).
+  virtual bool TestAndSet(int x, int y, double inv_z) {
+    return depth_buffer.TestAndSet(x, y, inv_z);
   }
-  void Write(int x, int y, const Color& color) { PassWrite(pass, canvas, x, y, color); }
+  virtual void Write(int x, int y, const Color& color) { canvas.PutPixel(x, y, color); }
 };
 
 // "Flat Shading": the unit normal of the triangle's plane, (B - A) x (C - A)
@@ -154,27 +137,6 @@ double TexelsPerPixel(const glm::dvec2& duv_dx, const glm::dvec2& duv_dy, const 
 Color SurfaceColor(const Surface& surface, const Attributes& attributes,
                    const CarriedGradients& gradients, const Texturing& texturing);
 
-// "Normal Mapping": the unit normal N bent by the surface's normal map at (u, v), if
-// it has one. The map is read as a colour texture is, texel (i, j) at the point (i, j).
-Vec3 BendNormal(const Vec3& N, const Surface& surface, const glm::dvec2& uv,
-                const TangentBasis& tangents);
-
-// "Shadow Mapping": how much of each light reaches camera-space point P, whose unit
-// normal is N, into `visibility` (one per light); nothing when no light has a map.
-// For Frame::shadow_entries: the entry of the first shadow map with views that pixel
-// (x, y), showing camera-space point P, reads (ShadowMapEntry); -1 if none.
-void RecordShadowEntry(const Vec3& P, const Lighting& lighting, int x, int y, Frame& frame);
-
-void LightVisibilities(const Vec3& P, const Vec3& N, const Lighting& lighting,
-                       const glm::dmat4& camera_to_world, std::vector<double>& visibility);
-
-// "Environment Mapping": the pixel's colour with its reflection mixed in, as chapter
-// 4 mixes in the reflected ray's: (1 - r) local + r SampleCubeMap(R), R = 2N<N, V> - V
-// turned into world space. The reflection is added in the first pass only, as the
-// ambient light is; a later pass still scales the local colour by 1 - r.
-Color MixReflection(const Color& local, const Vec3& P, const Vec3& N, const Surface& surface,
-                    const Frame& frame);
-
 // The normals the shading uses at the three corners, unit length: the corners' own,
 // or (kTriangle) the triangle's, ComputeTriangleNormal.
 std::array<Vec3, 3> CornerNormals(const std::array<ShadedCorner, 3>& corners, NormalSource source);
@@ -185,20 +147,38 @@ std::array<Vec3, 3> CornerNormals(const std::array<ShadedCorner, 3>& corners, No
 double FlatIllumination(const std::array<ShadedCorner, 3>& corners, double specular,
                         const Lighting& lighting);
 
+// What Phong shading knows of a pixel: the camera-space point it shows, the unit normal
+// there, its texture coordinates, and how much of each light reaches the point (none
+// given: all of every light).
+struct PhongPixel {
+  Vec3 P;
+  Vec3 N;
+  glm::dvec2 uv;
+  std::vector<double> visibility;
+};
+
+// What a renderer adds to Phong shading at each pixel of a triangle: Before may bend
+// the normal and keep light from the point, After may change the lit colour. These add
+// nothing; chapter 15's stages do (scene_rendering.cpp).
+class PhongSteps {
+ public:
+  virtual ~PhongSteps() = default;
+  virtual void Before(PhongPixel& /*pixel*/) const {}
+  virtual Color After(const PhongPixel& /*pixel*/, const Color& lit) const { return lit; }
+};
+
 // The three ways of shading a triangle, each filling it (depth-tested) with the
 // surface's colour (SurfaceColor) times the illumination: computed once for the triangle (flat), at
 // its corners and interpolated (Gouraud), or at every pixel, from the interpolated
-// normal and the point UnProjectVertex rebuilds (Phong). `corners` in the triangle's
-// own order. Normal maps, shadow maps and reflections need a normal and a point at
-// every pixel, so only Phong shading has them; passes (and so stencil shadows) work
-// with any shading.
+// normal and the point UnProjectVertex rebuilds (Phong, with the steps a renderer
+// adds). `corners` in the triangle's own order.
 void ShadeFlat(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
                const Lighting& lighting, Frame& frame);
 void ShadeGouraud(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
                   const Lighting& lighting, Frame& frame);
 void ShadePhong(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
-                const Lighting& lighting, Frame& frame);
+                const Lighting& lighting, Frame& frame, const PhongSteps& steps = {});
 
 // The triangle shaded as lighting.shading says.
 void ShadeTriangle(const std::array<ShadedCorner, 3>& corners, const Surface& surface,
-                   const Lighting& lighting, Frame& frame);
+                   const Lighting& lighting, Frame& frame, const PhongSteps& steps = {});

@@ -7,6 +7,7 @@
 
 #include "depth_buffer.h"
 #include "projection.h"
+#include "view_rendering.h"
 
 bool InShadow(double stored_depth, double depth, double bias) {
   return stored_depth < depth - bias;
@@ -95,15 +96,24 @@ std::pair<int, int> NearestEntry(const ViewPoint& point) {
 
 }  // namespace
 
+namespace {
+
+// The nearest entry to a point of the map, as one number (ShadowMapEntry).
+long EntryNumber(const ShadowMap& shadow_map, const ViewPoint& point) {
+  const auto [i, j] = NearestEntry(point);
+  const int size = point.view->size;
+  const long view = point.view - shadow_map.views.data();
+  return (view * size + std::clamp(j, 0, size - 1)) * size + std::clamp(i, 0, size - 1);
+}
+
+}  // namespace
+
 std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P) {
   const std::optional<ViewPoint> point = FindInShadowMap(shadow_map, P);
   if (!point) {
     return std::nullopt;
   }
-  const auto [i, j] = NearestEntry(*point);
-  const int size = point->view->size;
-  const long view = point->view - shadow_map.views.data();
-  return (view * size + std::clamp(j, 0, size - 1)) * size + std::clamp(i, 0, size - 1);
+  return EntryNumber(shadow_map, *point);
 }
 
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N) {
@@ -111,6 +121,7 @@ double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N
   if (!point) {
     return 1;
   }
+  cgfs::Record(kShadowMapEntries, [&] { return EntryNumber(shadow_map, *point); });
   const ShadowMapping& settings = shadow_map.settings;
   const double cos_angle = glm::dot(N, TowardsLight(shadow_map.light, P));
   const double bias = ShadowBias(settings, cos_angle) * EntryWidth(*point);
@@ -126,6 +137,20 @@ double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N
   };
   return PercentageCloserFilter({shadowed(0, 0), shadowed(1, 0), shadowed(0, 1), shadowed(1, 1)},
                                 point->tx - i, point->ty - j);
+}
+
+void LightVisibilities(const Vec3& P, const Vec3& N,
+                       const std::vector<const ShadowMap*>& shadow_maps,
+                       const glm::dmat4& camera_to_world, std::vector<double>& visibility) {
+  visibility.clear();
+  if (shadow_maps.empty()) {
+    return;
+  }
+  const Vec3 P_world = cgfs::ToCartesian(camera_to_world * glm::dvec4(P, 1.0));
+  const Vec3 N_world = Vec3(camera_to_world * glm::dvec4(N, 0.0));
+  for (const ShadowMap* shadow_map : shadow_maps) {
+    visibility.push_back(shadow_map ? LightVisibility(*shadow_map, P_world, N_world) : 1.0);
+  }
 }
 
 namespace {
@@ -159,13 +184,8 @@ DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& world_to_view, in
   const double d = NearPlaneOfMaps(scene);
   const Viewport viewport{2 * d, 2 * d, d};
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  CameraSpaceScene view_scene;
-  for (const Instance& I : scene.instances) {
-    view_scene.instances.push_back(
-        TransformToCameraSpace(I, world_to_view * MakeTransformMatrix(I.transform)));
-  }
   for (const CameraSpaceInstance& I :
-       ClipScene(view_scene, CubeFaceClippingPlanes(d, size)).instances) {
+       ClipScene(SceneInView(scene, world_to_view), CubeFaceClippingPlanes(d, size)).instances) {
     const auto& V = I.model.vertices;
     for (const Triangle& T : I.model.triangles) {
       DrawFilledTriangle(ProjectVertex(V[T.v[0]], canvas, viewport),
@@ -189,15 +209,13 @@ DepthMap OrthographicView(const Scene& scene, const Vec3& direction, int size) {
   Canvas canvas(size, size);
   const Viewport viewport{2 * bounds.radius, 2 * bounds.radius, 1};
   DepthBuffer depth_buffer(canvas, DepthValue::kZ);
-  for (const Instance& I : scene.instances) {
-    const glm::dmat4 M = world_to_view * MakeTransformMatrix(I.transform);
-    std::vector<Vec3> V;
+  for (const CameraSpaceInstance& I : SceneInView(scene, world_to_view).instances) {
+    const std::vector<Vec3>& V = I.model.vertices;
     std::vector<Point> projected;
-    for (const Vec3& vertex : I.model->vertices) {
-      V.push_back(cgfs::ToCartesian(M * glm::dvec4(vertex, 1.0)));
-      projected.push_back(ViewportToCanvas(V.back().x, V.back().y, canvas, viewport));
+    for (const Vec3& vertex : V) {
+      projected.push_back(ViewportToCanvas(vertex.x, vertex.y, canvas, viewport));
     }
-    for (const Triangle& T : I.model->triangles) {
+    for (const Triangle& T : I.model.triangles) {
       DrawFilledTriangle(projected[T.v[0]], projected[T.v[1]], projected[T.v[2]], V[T.v[0]].z,
                          V[T.v[1]].z, V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
     }

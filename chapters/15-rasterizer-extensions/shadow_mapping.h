@@ -9,6 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "cgfs/tally.h"
 #include "lighting.h"
 #include "map_views.h"
 
@@ -73,13 +74,24 @@ double PercentageCloserFilter(const std::array<bool, 4>& in_shadow, double fx, d
 
 // How much of the light whose shadow map this is reaches world-space point P of a
 // surface whose unit normal there is N, in [0, 1]: 0 or 1, or in between with
-// filtering. Points outside every view are lit.
+// filtering. Points outside every view are lit. The entry the lookup reads is recorded
+// at the pixel being drawn (kShadowMapEntries), for the cost view of the map's
+// resolution.
 double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N);
 
 // The entry a lookup without filtering reads for world-space point P (the one nearest
 // the point), as one number: view x size x size + row x size + column; empty for a point
-// outside every view. What the cost view of a map's resolution counts with.
+// outside every view.
 std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P);
+inline constexpr cgfs::Counter kShadowMapEntries{"shadow-map entries read"};
+
+// "Shadow Mapping", at a point of the camera's view: how much of each light reaches
+// camera-space point P, whose unit normal is N, into `visibility`, one per shadow map
+// (nullptr for a light without one); nothing when there are no maps. The maps are in
+// world space: camera_to_world takes P and N there.
+void LightVisibilities(const Vec3& P, const Vec3& N,
+                       const std::vector<const ShadowMap*>& shadow_maps,
+                       const glm::dmat4& camera_to_world, std::vector<double>& visibility);
 
 // "Shadow Mapping": the scene's depths as `light` (in world space) sees them,
 // settings.size x settings.size per view: six perspective views from a point light, one

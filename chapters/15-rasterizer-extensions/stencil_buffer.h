@@ -3,9 +3,11 @@
 // pixels they may draw.
 #pragma once
 
-#include <vector>
-
 #include "canvas_grid.h"
+#include "cgfs/tally.h"
+
+// Each write to the stencil, counted at its pixel (a cost view).
+inline constexpr cgfs::Counter kStencilWrites{"stencil writes"};
 
 class StencilBuffer {
  public:
@@ -22,21 +24,13 @@ class StencilBuffer {
   void Add(int x, int y, int delta) {
     if (int* count = counts_.Find(x, y)) {
       *count += delta;
-      if (writes_ != nullptr) {
-        ++(*writes_)[*counts_.Index(x, y)];
-      }
+      cgfs::TallyAt(kStencilWrites, x, y);
     }
   }
-
-  // How much work the stencil does (a cost view): from here on every Add on the canvas
-  // adds one to its pixel's entry of `writes`, row by row from the top (one entry per
-  // pixel), until CountWrites(nullptr).
-  void CountWrites(std::vector<long>* writes) { writes_ = writes; }
 
   // Every pixel back to 0.
   void Clear() { counts_.Fill(0); }
 
  private:
   CanvasGrid<int> counts_;
-  std::vector<long>* writes_ = nullptr;
 };

@@ -115,12 +115,11 @@ int Bvh::Pack(int node) {
 // every step: Closest narrows it as it finds hits. The build's tree is under 64
 // levels deep (Build) for any scene that fits in memory, so this one is too, and each
 // level leaves at most three children on the stack.
-template <typename Visit, typename Count>
-void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit,
-               Count& count) const {
+template <typename Visit>
+void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, Visit visit) const {
   const SlabRay slab = MakeSlabRay(ray);
   double t_root = 0;
-  count.Boxes(1);
+  cgfs::Tally(kBoxTests);
   if (!RayHitsBox(root_box_, ray.O, ray.D, slab.inv_D, t_min, t_max, t_root)) {
     return;
   }
@@ -136,7 +135,7 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
     // Down the nearest child, the others left on the stack nearest on top, until a leaf.
     while (entry.child >= 0 && entry.t_enter <= best) {
       const PackedNode& node = packed_[entry.child];
-      count.Boxes(node.count);
+      cgfs::Tally(kBoxTests, node.count);
       double enter[4];
       bool hits[4];
       RayHitsChildren(node.bounds, slab, t_min, std::min(t_max, best), enter, hits);
@@ -169,28 +168,14 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
   }
 }
 
-Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object, Tests* tests) const {
-  if (tests == nullptr) {
-    NoCount none;
-    return FindClosest(ray, t_min, t_max, object, none);
-  }
-  struct Counter {
-    Tests& tests;
-    void Boxes(int n) { tests.boxes += n; }
-    void Object() { ++tests.objects; }
-  } counter{*tests};
-  return FindClosest(ray, t_min, t_max, object, counter);
-}
-
-template <typename Count>
-Hit Bvh::FindClosest(const Ray& ray, double t_min, double t_max, int& object, Count& count) const {
+Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
   Hit best;
   object = -1;
   if (order_.empty()) {
     return best;
   }
   const auto test = [&](int slot) {
-    count.Object();
+    cgfs::Tally(kObjectTests);
     const int candidate = order_[slot];
     const Hit hit = IntersectSlot(slot, ray, t_min, t_max);
     // On a tie the lower index wins, as in the plain loop, which keeps the first.
@@ -201,7 +186,7 @@ Hit Bvh::FindClosest(const Ray& ray, double t_min, double t_max, int& object, Co
   };
   if (root_ < 0) {  // all in one leaf: the plain loop, in scene order, without a box test
     for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      count.Object();
+      cgfs::Tally(kObjectTests);
       const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
       if (hit.t < best.t) {
         best = hit;
@@ -210,15 +195,12 @@ Hit Bvh::FindClosest(const Ray& ray, double t_min, double t_max, int& object, Co
     }
     return best;
   }
-  Walk(
-      ray, t_min, t_max, best.t,
-      [&](const Leaf& leaf) {
-        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-          test(slot);
-        }
-        return false;
-      },
-      count);
+  Walk(ray, t_min, t_max, best.t, [&](const Leaf& leaf) {
+    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+      test(slot);
+    }
+    return false;
+  });
   return best;
 }
 
@@ -236,18 +218,15 @@ bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   if (order_.empty()) {
     return false;
   }
-  NoCount none;
-  Walk(
-      ray, t_min, t_max, t_max,
-      [&](const Leaf& leaf) {
-        for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
-          if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
-            object = order_[slot];
-            return true;
-          }
-        }
-        return false;
-      },
-      none);
+  Walk(ray, t_min, t_max, t_max, [&](const Leaf& leaf) {
+    for (int slot = leaf.first; slot < leaf.first + leaf.count; ++slot) {
+      cgfs::Tally(kObjectTests);
+      if (IntersectSlot(slot, ray, t_min, t_max).t < cgfs::kInf) {
+        object = order_[slot];
+        return true;
+      }
+    }
+    return false;
+  });
   return object >= 0;
 }

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "cgfs/tally.h"
 #include "objects.h"
 
 // The build's boxes (bvh_build.cpp): in single precision, rounded outwards from the
@@ -40,23 +41,20 @@ inline double SurfaceArea(const FloatBox& box) {
   return 2 * (x * y + y * z + z * x);
 }
 
+// The work of a search, counted box by box and object by object: the cost view of the
+// tests per camera ray (cost.h), the tests, and the chapter's README's numbers.
+inline constexpr cgfs::Counter kBoxTests{"box tests"};
+inline constexpr cgfs::Counter kObjectTests{"object tests"};
+
 class Bvh {
  public:
   // Built once per scene over its objects, which it refers to by index.
   explicit Bvh(const std::vector<std::shared_ptr<Object>>& objects);
 
-  // The work of one search, counted (tests and the chapter's README use it): box tests
-  // (the root's, and one per child of each inner node visited) and object tests.
-  struct Tests {
-    long boxes = 0;
-    long objects = 0;
-  };
-
   // The nearest hit in [t_min, t_max], as the loop over every object finds it: on a
   // tie in t, the object that comes first in the scene. `object` is the index of
-  // the scene object hit, or -1. Counts its work into `tests` if given.
-  Hit Closest(const Ray& ray, double t_min, double t_max, int& object,
-              Tests* tests = nullptr) const;
+  // the scene object hit, or -1.
+  Hit Closest(const Ray& ray, double t_min, double t_max, int& object) const;
   // Whether anything is hit in [t_min, t_max]; stops at the first hit found.
   bool Any(const Ray& ray, double t_min, double t_max, int& object) const;
   // Whether scene object `object` is hit in [t_min, t_max]; a prepared sphere is tested
@@ -130,16 +128,8 @@ class Bvh {
     int count = 0;
   };
   int Pack(int node);
-  // Counts nothing: what Closest and Any walk with, at no cost.
-  struct NoCount {
-    void Boxes(int) {}
-    void Object() {}
-  };
-  template <typename Count>
-  Hit FindClosest(const Ray& ray, double t_min, double t_max, int& object, Count& count) const;
-  template <typename Visit, typename Count>
-  void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit,
-            Count& count) const;
+  template <typename Visit>
+  void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
 
   // The hit of the object in leaf slot `slot`, order_[slot]. Prepared spheres, the usual
   // leaves, are tested inline, from the hierarchy's copy of what their test reads.

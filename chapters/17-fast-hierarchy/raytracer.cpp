@@ -170,9 +170,7 @@ double ComputeLighting(const Vec3& P, const Vec3& N, const Vec3& V, double s, co
 // and through it.
 Color TraceRay(const Vec3& O, const Vec3& D, double t_min, double t_max, int recursion_depth,
                const Scene& scene, double medium_index) {
-  if (scene.traced_rays != nullptr) {
-    ++*scene.traced_rays;
-  }
+  cgfs::Tally(kTracedRays);
   const Hit closest = ClosestIntersection(O, D, t_min, t_max, scene);
   if (closest.primitive == nullptr) {
     return scene.background_color;
@@ -252,20 +250,16 @@ Vec3 CameraRayDirection(double x, double y, const Canvas& canvas, const Scene& s
 }
 
 // Listing 5-1. t_min = 1 keeps only what lies beyond the projection plane.
-// The loops are half-open so that a Cw x Ch canvas gets exactly Cw x Ch rays; the
-// tiles of parallel.h cover the same pixels, whatever the number of workers.
+// The pixels are those of the canvas, Cw x Ch rays (not the book's inclusive loops), in
+// the tiles of parallel.h, whatever the number of workers.
 void RenderScene(const Scene& scene, int recursion_depth, Canvas& canvas,
                  const Optimizations& optimizations) {
   Scene prepared = scene;
   PrepareScene(prepared, optimizations);
-  ForEachTile(canvas.Width(), canvas.Height(), optimizations.threads, [&](const Tile& tile) {
-    for (int x = tile.x_begin; x < tile.x_end; ++x) {
-      for (int y = tile.y_begin; y < tile.y_end; ++y) {
-        const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
-        const Color color =
-            TraceRay(prepared.camera.position, D, 1, cgfs::kInf, recursion_depth, prepared);
-        canvas.PutPixel(x, y, color);
-      }
-    }
+  ForEachPixel(canvas, optimizations.threads, [&](int x, int y) {
+    const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
+    const Color color =
+        TraceRay(prepared.camera.position, D, 1, cgfs::kInf, recursion_depth, prepared);
+    canvas.PutPixel(x, y, color);
   });
 }

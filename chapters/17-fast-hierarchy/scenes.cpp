@@ -257,15 +257,18 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
 }
 
 // A cost view: what `count` finds per pixel of a scene, drawn through the cost ramp
-// with `scale_max` at its top (program/cost_view.h).
+// with `scale_max` at its top (program/cost_view.h), its totals said after the caption.
 cgfs::Figure CostFigure(const std::string& name, const std::string& caption,
                         std::function<Scene()> make_scene,
                         std::function<std::vector<long>(const Scene&, Canvas&)> count,
                         long scale_max) {
-  return SceneFigure(name, caption, std::move(make_scene),
-                     [count, scale_max](const Scene& scene, Canvas& canvas) {
-                       cgfs::DrawCost(canvas, count(scene, canvas), scale_max);
-                     });
+  const cgfs::CostView cost;
+  cgfs::Figure figure = SceneFigure(name, caption, std::move(make_scene),
+                                    [cost, count, scale_max](const Scene& scene, Canvas& canvas) {
+                                      cost.Draw(canvas, count(scene, canvas), scale_max);
+                                    });
+  figure.measured = cost.Measured();
+  return figure;
 }
 
 // The box and object tests of each pixel's camera ray, together.
@@ -279,15 +282,13 @@ std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizatio
   };
 }
 
-// What a main loop counts per pixel while it draws (`render` fills the counts it is
-// given); the picture it draws is not kept.
+// What a main loop counts of `counter` per pixel while it draws; the picture it draws
+// is not kept.
 std::function<std::vector<long>(const Scene&, Canvas&)> CountedWhileDrawing(
-    std::function<void(const Scene&, Canvas&, std::vector<long>*)> render) {
-  return [render](const Scene& scene, Canvas& canvas) {
-    std::vector<long> counts(static_cast<std::size_t>(canvas.Width()) * canvas.Height(), 0);
+    const cgfs::Counter& counter, std::function<void(const Scene&, Canvas&)> render) {
+  return [&counter, render](const Scene& scene, Canvas& canvas) {
     Canvas drawn(canvas.Width(), canvas.Height());
-    render(scene, drawn, &counts);
-    return counts;
+    return CountedPerPixel(counter, canvas, [&] { render(scene, drawn); });
   };
 }
 
@@ -313,40 +314,33 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
   return {
       CostFigure("sphere-field-10000-tests",
                  "box and object tests per camera ray through the hierarchy, on a log scale to "
-                 "10 001: 12 646 689 in all, at most 269",
+                 "10 001",
                  field, TestsCounted(hierarchy), 10001),
-      CostFigure(
-          "sphere-field-10000-tests-without-hierarchy",
-          "tests per camera ray without the hierarchy, one per object: 3 600 360 000 in all, "
-          "at most 10 001",
-          field, TestsCounted(loop), 10001),
+      CostFigure("sphere-field-10000-tests-without-hierarchy",
+                 "tests per camera ray without the hierarchy, one per object", field,
+                 TestsCounted(loop), 10001),
       CostFigure("subsampling-thin-wires-searches",
-                 "the pixels whose camera ray subsampling searched through the scene (white): "
-                 "101 303 in all, at most 1",
+                 "the pixels whose camera ray subsampling searched through the scene (white)",
                  SceneThinWires,
-                 CountedWhileDrawing([optimizations](const Scene& scene, Canvas& drawn,
-                                                     std::vector<long>* searches) {
-                   RenderSceneSubsampled(scene, 0, drawn, optimizations, searches);
-                 }),
+                 CountedWhileDrawing(kCameraRays,
+                                     [optimizations](const Scene& scene, Canvas& drawn) {
+                                       RenderSceneSubsampled(scene, 0, drawn, optimizations);
+                                     }),
                  1),
       CostFigure("transparency-rays",
-                 "rays traced per pixel, the camera's and those reflected and sent through: "
-                 "1 241 735 in all, at most 11",
+                 "rays traced per pixel, the camera's and those reflected and sent through",
                  SceneTransparency, TracedCounted(3, optimizations), kRaysScale),
-      CostFigure("refraction-glass-sphere-rays",
-                 "rays traced per pixel through the glass ball: 1 331 478 in all, at most 23",
+      CostFigure("refraction-glass-sphere-rays", "rays traced per pixel through the glass ball",
                  SceneGlassSphere, TracedCounted(5, optimizations), kRaysScale),
-      CostFigure("refraction-magnifying-glass-rays",
-                 "rays traced per pixel through the lens: 955 466 in all, at most 25",
+      CostFigure("refraction-magnifying-glass-rays", "rays traced per pixel through the lens",
                  SceneMagnifyingGlass, TracedCounted(5, optimizations), kRaysScale),
       CostFigure("supersampling-adaptive-rays",
-                 "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white): "
-                 "443 744 in all, at most 17",
+                 "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white)",
                  SceneCamera,
-                 CountedWhileDrawing(
-                     [optimizations](const Scene& scene, Canvas& drawn, std::vector<long>* rays) {
-                       RenderSceneAdaptive(scene, 3, drawn, optimizations, rays);
-                     }),
+                 CountedWhileDrawing(kCameraRays,
+                                     [optimizations](const Scene& scene, Canvas& drawn) {
+                                       RenderSceneAdaptive(scene, 3, drawn, optimizations);
+                                     }),
                  17),
   };
 }

@@ -22,19 +22,29 @@ std::atomic<Tallying*> active{nullptr};
 void Add(const Counter& counter, int x, int y) {
   Tallying* tallying = active.load(std::memory_order_acquire);
   if (tallying != nullptr && tallying->counter_ == &counter) {
-    tallying->Add(x, y);
+    tallying->Add(x, y, 1);
   }
 }
 
-void AddAtCurrentPixel(const Counter& counter) {
+void AddAtCurrentPixel(const Counter& counter, long events) {
   Tallying* tallying = active.load(std::memory_order_acquire);
   if (tallying == nullptr || tallying->counter_ != &counter) {
     return;
   }
   if (current_pixel) {
-    tallying->Add(current_pixel->x, current_pixel->y);
+    tallying->Add(current_pixel->x, current_pixel->y, events);
   } else {
-    tallying->elsewhere_.fetch_add(1, std::memory_order_relaxed);
+    tallying->elsewhere_.fetch_add(events, std::memory_order_relaxed);
+  }
+}
+
+void RecordAtCurrentPixel(const Counter& counter, long value) {
+  Tallying* tallying = active.load(std::memory_order_acquire);
+  if (tallying == nullptr || tallying->counter_ != &counter || !current_pixel) {
+    return;
+  }
+  if (long* cell = tallying->Cell(current_pixel->x, current_pixel->y)) {
+    *cell = value;
   }
 }
 
@@ -48,11 +58,11 @@ CurrentPixel::~CurrentPixel() {
   current_pixel.reset();
 }
 
-Tallying::Tallying(const Counter& counter, int width, int height)
+Tallying::Tallying(const Counter& counter, int width, int height, long initial)
     : counter_(&counter),
       width_(width),
       height_(height),
-      counts_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {
+      counts_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), initial) {
   Tallying* none = nullptr;
   if (!tally_internal::active.compare_exchange_strong(none, this)) {
     throw std::logic_error("Tallying: one at a time");
@@ -68,15 +78,22 @@ long Tallying::Total() const {
 }
 
 // The canvas's mapping (Canvas::ToScreen): column Cw/2 + x, row Ch/2 - y - 1.
-void Tallying::Add(int x, int y) {
+long* Tallying::Cell(int x, int y) {
   const int column = width_ / 2 + x;
   const int row = height_ / 2 - y - 1;
   if (column < 0 || column >= width_ || row < 0 || row >= height_) {
-    elsewhere_.fetch_add(1, std::memory_order_relaxed);
-    return;
+    return nullptr;
   }
-  ++counts_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-            static_cast<std::size_t>(column)];
+  return &counts_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                  static_cast<std::size_t>(column)];
+}
+
+void Tallying::Add(int x, int y, long events) {
+  if (long* cell = Cell(x, y)) {
+    *cell += events;
+  } else {
+    elsewhere_.fetch_add(events, std::memory_order_relaxed);
+  }
 }
 
 }  // namespace cgfs

@@ -185,7 +185,7 @@ int ChapterProgram::DrawFigures(const std::vector<Figure>& figures) const {
     char time[32];
     std::snprintf(time, sizeof time, "%.1f", elapsed.count());
     std::cout << "wrote " << file.string() << "  (" << size.width << "x" << size.height
-              << ", rendered in " << time << " ms)  " << figure->caption << "\n";
+              << ", rendered in " << time << " ms)  " << CaptionOfDrawn(*figure) << "\n";
   }
   return 0;
 }

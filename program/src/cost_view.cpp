@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace cgfs {
 
@@ -84,6 +85,32 @@ void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
       Put(canvas, column, row, color);
     }
   }
+}
+
+namespace {
+
+// 1234567 as the captions write it: "1 234 567".
+std::string Spaced(long n) {
+  const std::string digits = std::to_string(n < 0 ? -n : n);
+  std::string spaced = n < 0 ? "-" : "";
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) {
+      spaced += ' ';
+    }
+    spaced += digits[i];
+  }
+  return spaced;
+}
+
+}  // namespace
+
+std::string CostTotals(const std::vector<long>& counts) {
+  long total = 0, largest = 0;
+  for (const long count : counts) {
+    total += std::max(count, 0L);
+    largest = std::max(largest, count);
+  }
+  return Spaced(total) + " in all, at most " + Spaced(largest);
 }
 
 }  // namespace cgfs

@@ -34,6 +34,11 @@ void SetCostView(std::vector<Figure>& figures, const std::string& name,
   figure->cost_view = cost_view;
 }
 
+std::string CaptionOfDrawn(const Figure& figure) {
+  const std::string measured = figure.measured ? figure.measured() : "";
+  return measured.empty() ? figure.caption : figure.caption + ": " + measured;
+}
+
 int CostPartner(const std::vector<const Figure*>& figures, std::size_t index) {
   const Figure& shown = *figures.at(index);
   for (std::size_t i = 0; i < figures.size(); ++i) {
@@ -64,7 +69,8 @@ View ParseView(const std::string& text) {
       throw UsageError("'" + text + "' is not five numbers x,y,z,yaw,pitch");
     }
     if (!std::isfinite(values[i]) || std::abs(values[i]) > kLargest) {
-      throw UsageError("'" + text + "': " + kNames[i] + " is out of range (at most 1e6 either way)");
+      throw UsageError("'" + text + "': " + kNames[i] +
+                       " is out of range (at most 1e6 either way)");
     }
   }
   if (in >> comma) {

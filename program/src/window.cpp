@@ -132,7 +132,7 @@ void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const S
   SDL_RenderPresent(sdl.renderer);
   char time[32];
   std::snprintf(time, sizeof time, "%.1f ms", shown.milliseconds);
-  std::string title = chapter + ": " + figure.name + " - " + figure.caption + " - " + time;
+  std::string title = chapter + ": " + figure.name + " - " + CaptionOfDrawn(figure) + " - " + time;
   if (figure.draw_from && !(view == View{})) {
     title += " - view " + FormatView(view);
   }

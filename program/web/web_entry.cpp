@@ -87,6 +87,11 @@ EMSCRIPTEN_KEEPALIVE const char* FigureCaption(int index) {
   const cgfs::Figure* figure = FigureAt(index);
   return Text(figure != nullptr ? figure->caption : "");
 }
+// What the figure's last draw measured (a cost view's totals), "" when nothing.
+EMSCRIPTEN_KEEPALIVE const char* FigureMeasured(int index) {
+  const cgfs::Figure* figure = FigureAt(index);
+  return Text(figure != nullptr && figure->measured ? figure->measured() : "");
+}
 EMSCRIPTEN_KEEPALIVE int FigureHasCamera(int index) {
   const cgfs::Figure* figure = FigureAt(index);
   return figure == nullptr ? -1 : figure->draw_from ? 1 : 0;
@@ -151,7 +156,8 @@ EMSCRIPTEN_KEEPALIVE const char* LastError() {
 // ComparisonText() then says what cgfs-compare says (its numbers, verdict and diagnosis),
 // Pixels() holds the difference image, and DifferingColumn() and DifferingRow() the first
 // differing pixel (-1 when none).
-EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height, const std::uint8_t* rgba) {
+EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height,
+                                           const std::uint8_t* rgba) {
   const cgfs::Figure* figure = FigureAt(index);
   if (figure == nullptr) {
     return -1;
@@ -174,7 +180,8 @@ EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height, con
   }
 }
 EMSCRIPTEN_KEEPALIVE const char* ComparisonText() {
-  return Text(cgfs::Describe(comparison, comparison.difference.Width(), comparison.difference.Height()));
+  return Text(
+      cgfs::Describe(comparison, comparison.difference.Width(), comparison.difference.Height()));
 }
 EMSCRIPTEN_KEEPALIVE int DifferingColumn() {
   return comparison.differing_pixels > 0 ? comparison.first_differing.column : -1;

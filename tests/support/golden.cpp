@@ -48,12 +48,18 @@ namespace {
 // tests of its pixels share the drawing: within a test program a figure's name stands
 // for one image (every caller passes the chapter's Figures() with its default
 // settings; that other settings draw the same images is tested with RenderFigure).
-const Canvas& DrawnOnce(const Figure& figure, int width, int height) {
-  static std::map<std::tuple<std::string, int, int>, Canvas> drawn;
+struct Drawing {
+  Canvas canvas;
+  std::string measured;  // what the figure said it measured once drawn
+};
+const Drawing& DrawnOnce(const Figure& figure, int width, int height) {
+  static std::map<std::tuple<std::string, int, int>, Drawing> drawn;
   const auto key = std::tuple(figure.name, width, height);
   auto found = drawn.find(key);
   if (found == drawn.end()) {
-    found = drawn.emplace(key, RenderFigure(figure, width, height)).first;
+    Canvas canvas = RenderFigure(figure, width, height);
+    found = drawn.emplace(key, Drawing{std::move(canvas), figure.measured ? figure.measured() : ""})
+                .first;
   }
   return found->second;
 }
@@ -61,7 +67,11 @@ const Canvas& DrawnOnce(const Figure& figure, int width, int height) {
 }  // namespace
 
 Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& name) {
-  return DrawnOnce(FindFigure(figures, name), kGoldenWidth, kGoldenHeight);
+  return DrawnOnce(FindFigure(figures, name), kGoldenWidth, kGoldenHeight).canvas;
+}
+
+std::string MeasuredByFigureNamed(const std::vector<Figure>& figures, const std::string& name) {
+  return DrawnOnce(FindFigure(figures, name), kGoldenWidth, kGoldenHeight).measured;
 }
 
 std::string GoldenFile(const std::string& chapter, const std::string& name) {
@@ -117,7 +127,7 @@ void CheckAgainstGolden(const std::string& chapter, const std::vector<Figure>& f
   const Image golden = ReadGolden(chapter, name);
   const Figure& figure = FindFigure(figures, name);
   CompareWithGolden(chapter, name, golden,
-                    DrawnOnce(figure, golden.Width(), golden.Height()).GetImage());
+                    DrawnOnce(figure, golden.Width(), golden.Height()).canvas.GetImage());
 }
 
 void CheckImageAgainstGolden(const std::string& chapter, const std::string& name,

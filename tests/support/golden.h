@@ -19,6 +19,8 @@ const Figure& FindFigure(const std::vector<Figure>& figures, const std::string& 
 
 // Draws the named figure at 600x600 (once per test program: see golden.cpp).
 Canvas RenderFigureNamed(const std::vector<Figure>& figures, const std::string& name);
+// What that drawing said it measured (Figure::measured), "" for nothing.
+std::string MeasuredByFigureNamed(const std::vector<Figure>& figures, const std::string& name);
 
 // tests/golden/<chapter>/<name>.png
 std::string GoldenFile(const std::string& chapter, const std::string& name);

@@ -76,7 +76,8 @@ async function Draw(full) {
     Show(frame, isFull, width, height);
     const time = frame.milliseconds < 10 ? frame.milliseconds.toFixed(1) : frame.milliseconds.toFixed(0);
     Say('status', `${figure.name}: ${frame.width} × ${frame.height} drawn in ${time} ms` +
-                  (isFull ? '' : ', at half size while the camera moves'));
+                  (isFull ? '' : ', at half size while the camera moves') +
+                  (frame.measured ? `; ${frame.measured}` : ''));
     canvas.dataset.drawn = isFull ? 'full' : 'preview';
     canvas.dataset.milliseconds = frame.milliseconds;
   }

@@ -6,7 +6,8 @@
 //   draw index width height full view
 //                            the figure at that size (half of it, stretched by the page,
 //                            while the camera moves: full false), from that view; its
-//                            pixels (RGBA), or a problem; { progress } messages meanwhile
+//                            pixels (RGBA) and what it measured (a cost view's totals),
+//                            or a problem; { progress } messages meanwhile
 //   camera view key|drag|reset|set
 //                            the view after a key, a drag, back to the chapter's, or one
 //                            typed; the view, or a problem
@@ -61,7 +62,8 @@ const operations = {
     if (!module._DrawFigure(index, w, h)) return { problem: Text(module, module._LastError()) };
     const milliseconds = performance.now() - start;
     const pixels = Pixels(module, w * h * 4);
-    return { answer: { pixels, width: w, height: h, milliseconds }, transfer: [pixels.buffer] };
+    const measured = Text(module, module._FigureMeasured(index));
+    return { answer: { pixels, width: w, height: h, milliseconds, measured }, transfer: [pixels.buffer] };
   },
 
   camera(module, { view, key, drag, reset, set }) {

@@ -1,5 +1,6 @@
 // Counting work beside the book's code, for the views of where the work goes: one line
-// at the event, Tally(kCounter) or TallyAt(kCounter, x, y), and nothing in any of the
+// at the event, Tally(kCounter) or TallyAt(kCounter, x, y) (or Tally(kCounter, n) for n
+// events at once), and nothing in any of the
 // book's signatures, structures or scenes (pbrt-v4's per-pixel statistics are the
 // model). A counter is declared once, at the top of the file whose code counts it:
 //
@@ -27,7 +28,8 @@ class Tallying;
 namespace tally_internal {
 extern std::atomic<Tallying*> active;  // the one counting, if any
 void Add(const Counter& counter, int x, int y);
-void AddAtCurrentPixel(const Counter& counter);
+void AddAtCurrentPixel(const Counter& counter, long events);
+void RecordAtCurrentPixel(const Counter& counter, long value);
 }  // namespace tally_internal
 
 // One event at canvas point (x, y).
@@ -37,10 +39,20 @@ inline void TallyAt(const Counter& counter, int x, int y) {
   }
 }
 
-// One event at the pixel this thread is drawing.
-inline void Tally(const Counter& counter) {
+// `events` events (one unless said) at the pixel this thread is drawing.
+inline void Tally(const Counter& counter, long events = 1) {
   if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
-    tally_internal::AddAtCurrentPixel(counter);
+    tally_internal::AddAtCurrentPixel(counter, events);
+  }
+}
+
+// A value at the pixel this thread is drawing (the last one recorded there stays), for
+// a counter whose Tallying keeps values rather than counts: value() gives it, and is
+// called only while some counter is tallied.
+template <typename Value>
+inline void Record(const Counter& counter, const Value& value) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+    tally_internal::RecordAtCurrentPixel(counter, value());
   }
 }
 
@@ -54,11 +66,12 @@ class CurrentPixel {
   CurrentPixel& operator=(const CurrentPixel&) = delete;
 };
 
-// Counts `counter` over a width x height canvas while it lives; one at a time (a second
-// throws std::logic_error).
+// Counts `counter` over a width x height canvas while it lives, each pixel from
+// `initial` (or keeps the values Record records); one at a time (a second throws
+// std::logic_error).
 class Tallying {
  public:
-  Tallying(const Counter& counter, int width, int height);
+  Tallying(const Counter& counter, int width, int height, long initial = 0);
   ~Tallying();
   Tallying(const Tallying&) = delete;
   Tallying& operator=(const Tallying&) = delete;
@@ -70,8 +83,10 @@ class Tallying {
 
  private:
   friend void tally_internal::Add(const Counter&, int, int);
-  friend void tally_internal::AddAtCurrentPixel(const Counter&);
-  void Add(int x, int y);
+  friend void tally_internal::AddAtCurrentPixel(const Counter&, long);
+  friend void tally_internal::RecordAtCurrentPixel(const Counter&, long);
+  void Add(int x, int y, long events);
+  long* Cell(int x, int y);  // the pixel's count, or nullptr off the canvas
 
   const Counter* counter_;
   int width_, height_;

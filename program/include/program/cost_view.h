@@ -2,6 +2,9 @@
 // level...) drawn through one colour ramp, with the scale along the bottom edge.
 #pragma once
 
+#include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "cgfs/canvas.h"
@@ -33,5 +36,26 @@ int CostStripHeight(int canvas_height);
 inline constexpr long kCostStepsMax = 16;
 inline constexpr Rgb8 kCostNothing{128, 128, 128};
 void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max);
+
+// What a cost view says of its counts: their total and the largest, as
+// "13 414 717 in all, at most 292".
+std::string CostTotals(const std::vector<long>& counts);
+
+// A cost view's drawing, and what it said of the counts it last drew, for its figure's
+// `measured` (program/figure.h). Copies share what was said.
+class CostView {
+ public:
+  CostView() : said_(std::make_shared<std::string>()) {}
+  void Draw(Canvas& canvas, const std::vector<long>& counts, long scale_max) const {
+    DrawCost(canvas, counts, scale_max);
+    *said_ = CostTotals(counts);
+  }
+  std::function<std::string()> Measured() const {
+    return [said = said_] { return *said; };
+  }
+
+ private:
+  std::shared_ptr<std::string> said_;
+};
 
 }  // namespace cgfs
