@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "view_rendering.h"
+#include "scene_rendering.h"
 
 // Chapter 4, "Reflections".
 Vec3 ReflectRay(const Vec3& R, const Vec3& N) {

@@ -38,7 +38,7 @@ Color SampleCubeMap(const CubeMap& cube_map, const Vec3& R);
 
 // "Environment Mapping": the surroundings seen from `centre`, six 90-degree views
 // (viewport 2d x 2d at d = NearPlaneOfMaps), size x size pixels each: the scene's
-// instances that reflect nothing, drawn by RenderView (view_rendering.h) with the
+// instances that reflect nothing, drawn by RenderView (scene_rendering.h) with the
 // default (Phong) shading and no stage, so reflections show no shadows. The
 // reflective ones are left out: each would otherwise have to be in the others' maps,
 // and its own map is made from inside it. The map is centred on the reflective

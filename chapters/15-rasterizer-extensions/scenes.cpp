@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "normal_mapping.h"
 #include "program/cost_view.h"
 #include "sphere_model.h"
 

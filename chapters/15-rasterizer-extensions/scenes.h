@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "clipping.h"
+#include "extensions.h"
 #include "options.h"
 #include "program/figure.h"
-#include "scene_rendering.h"
 #include "texture.h"
 
 inline constexpr char kChapterDescription[] =

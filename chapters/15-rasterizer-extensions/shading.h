@@ -159,7 +159,7 @@ struct PhongPixel {
 
 // What a renderer adds to Phong shading at each pixel of a triangle: Before may bend
 // the normal and keep light from the point, After may change the lit colour. These add
-// nothing; chapter 15's stages do (scene_rendering.cpp).
+// nothing; chapter 15's stages do (extensions.cpp).
 class PhongSteps {
  public:
   virtual ~PhongSteps() = default;

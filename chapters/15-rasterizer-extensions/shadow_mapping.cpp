@@ -7,7 +7,7 @@
 
 #include "depth_buffer.h"
 #include "projection.h"
-#include "view_rendering.h"
+#include "scene_rendering.h"
 
 bool InShadow(double stored_depth, double depth, double bias) {
   return stored_depth < depth - bias;

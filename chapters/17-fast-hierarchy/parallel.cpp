@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "cgfs/progress.h"
-#include "cgfs/tally.h"
 
 void ForEachTile(int width, int height, int threads,
                  const std::function<void(const Tile&)>& draw_tile) {
@@ -75,16 +74,4 @@ void ForEachTile(int width, int height, int threads,
   if (failure) {
     std::rethrow_exception(failure);
   }
-}
-
-void ForEachPixel(const cgfs::Canvas& canvas, int threads,
-                  const std::function<void(int x, int y)>& draw) {
-  ForEachTile(canvas.Width(), canvas.Height(), threads, [&](const Tile& tile) {
-    for (int x = tile.x_begin; x < tile.x_end; ++x) {
-      for (int y = tile.y_begin; y < tile.y_end; ++y) {
-        const cgfs::CurrentPixel current(x, y);
-        draw(x, y);
-      }
-    }
-  });
 }

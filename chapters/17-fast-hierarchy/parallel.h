@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "cgfs/canvas.h"
+#include "cgfs/tally.h"
 
 // A rectangle of canvas coordinates: x in [x_begin, x_end), y in [y_begin, y_end).
 struct Tile {
@@ -22,6 +23,16 @@ void ForEachTile(int width, int height, int threads,
 
 // Calls draw(x, y) once for every pixel of the canvas, tile by tile as above. While a
 // pixel is drawn it is its thread's current pixel (cgfs::CurrentPixel), so that the
-// work counted with cgfs::Tally (tally.h) lands on it.
-void ForEachPixel(const cgfs::Canvas& canvas, int threads,
-                  const std::function<void(int x, int y)>& draw);
+// work counted with cgfs::Tally (tally.h) lands on it. In the header, so that `draw`
+// is inlined into the loops (a call per pixel would cost more than the counting).
+template <typename Draw>
+void ForEachPixel(const cgfs::Canvas& canvas, int threads, const Draw& draw) {
+  ForEachTile(canvas.Width(), canvas.Height(), threads, [&](const Tile& tile) {
+    for (int x = tile.x_begin; x < tile.x_end; ++x) {
+      for (int y = tile.y_begin; y < tile.y_end; ++y) {
+        const cgfs::CurrentPixel current(x, y);
+        draw(x, y);
+      }
+    }
+  });
+}

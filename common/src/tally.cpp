@@ -1,19 +1,9 @@
 #include "cgfs/tally.h"
 
 #include <numeric>
-#include <optional>
 #include <stdexcept>
 
 namespace cgfs {
-
-namespace {
-
-struct Point {
-  int x, y;
-};
-thread_local std::optional<Point> current_pixel;
-
-}  // namespace
 
 namespace tally_internal {
 
@@ -31,8 +21,8 @@ void AddAtCurrentPixel(const Counter& counter, long events) {
   if (tallying == nullptr || tallying->counter_ != &counter) {
     return;
   }
-  if (current_pixel) {
-    tallying->Add(current_pixel->x, current_pixel->y, events);
+  if (current_pixel.set) {
+    tallying->Add(current_pixel.x, current_pixel.y, events);
   } else {
     tallying->elsewhere_.fetch_add(events, std::memory_order_relaxed);
   }
@@ -40,23 +30,15 @@ void AddAtCurrentPixel(const Counter& counter, long events) {
 
 void RecordAtCurrentPixel(const Counter& counter, long value) {
   Tallying* tallying = active.load(std::memory_order_acquire);
-  if (tallying == nullptr || tallying->counter_ != &counter || !current_pixel) {
+  if (tallying == nullptr || tallying->counter_ != &counter || !current_pixel.set) {
     return;
   }
-  if (long* cell = tallying->Cell(current_pixel->x, current_pixel->y)) {
+  if (long* cell = tallying->Cell(current_pixel.x, current_pixel.y)) {
     *cell = value;
   }
 }
 
 }  // namespace tally_internal
-
-CurrentPixel::CurrentPixel(int x, int y) {
-  current_pixel = Point{x, y};
-}
-
-CurrentPixel::~CurrentPixel() {
-  current_pixel.reset();
-}
 
 Tallying::Tallying(const Counter& counter, int width, int height, long initial)
     : counter_(&counter),

@@ -40,6 +40,35 @@ TEST_CASE("Tally counts at the pixel the thread draws, or in the total when it d
   CHECK(tallying.Total() == 3);
 }
 
+TEST_CASE("Tally counts several events at once", "[tally]") {
+  const cgfs::Tallying tallying(kCounted, 2, 2);
+  const cgfs::CurrentPixel pixel(0, 0);  // column 1, row 0
+  cgfs::Tally(kCounted, 4);
+  CHECK(tallying.PerPixel() == std::vector<long>{0, 4, 0, 0});
+}
+
+TEST_CASE("Record keeps the last value at the pixel drawn, the rest from the start value",
+          "[tally]") {
+  int asked = 0;
+  const auto value = [&asked](long v) {
+    return [&asked, v] {
+      ++asked;
+      return v;
+    };
+  };
+  cgfs::Record(kCounted, value(7));  // nothing tallied: the value is not even asked for
+  CHECK(asked == 0);
+  const cgfs::Tallying tallying(kCounted, 2, 2, -1);
+  cgfs::Record(kCounted, value(9));  // no pixel drawn: kept nowhere
+  {
+    const cgfs::CurrentPixel pixel(-1, -1);  // column 0, row 1
+    cgfs::Record(kCounted, value(5));
+    cgfs::Record(kCounted, value(6));
+    cgfs::Record(kOther, value(8));  // another counter's
+  }
+  CHECK(tallying.PerPixel() == std::vector<long>{-1, -1, 6, -1});
+}
+
 TEST_CASE("One Tallying at a time", "[tally]") {
   const cgfs::Tallying first(kCounted, 2, 2);
   CHECK_THROWS_AS(cgfs::Tallying(kOther, 2, 2), std::logic_error);

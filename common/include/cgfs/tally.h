@@ -27,21 +27,29 @@ class Tallying;
 
 namespace tally_internal {
 extern std::atomic<Tallying*> active;  // the one counting, if any
-void Add(const Counter& counter, int x, int y);
-void AddAtCurrentPixel(const Counter& counter, long events);
-void RecordAtCurrentPixel(const Counter& counter, long value);
+// The pixel this thread draws (CurrentPixel), if one is set.
+struct Pixel {
+  int x = 0, y = 0;
+  bool set = false;
+};
+inline thread_local Pixel current_pixel;
+// The work of an event while something is tallied: out of line and marked cold, so that
+// the loops that count keep their registers for their own work.
+[[gnu::cold]] void Add(const Counter& counter, int x, int y);
+[[gnu::cold]] void AddAtCurrentPixel(const Counter& counter, long events);
+[[gnu::cold]] void RecordAtCurrentPixel(const Counter& counter, long value);
 }  // namespace tally_internal
 
 // One event at canvas point (x, y).
 inline void TallyAt(const Counter& counter, int x, int y) {
-  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) [[unlikely]] {
     tally_internal::Add(counter, x, y);
   }
 }
 
 // `events` events (one unless said) at the pixel this thread is drawing.
 inline void Tally(const Counter& counter, long events = 1) {
-  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) [[unlikely]] {
     tally_internal::AddAtCurrentPixel(counter, events);
   }
 }
@@ -51,7 +59,7 @@ inline void Tally(const Counter& counter, long events = 1) {
 // called only while some counter is tallied.
 template <typename Value>
 inline void Record(const Counter& counter, const Value& value) {
-  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) {
+  if (tally_internal::active.load(std::memory_order_relaxed) != nullptr) [[unlikely]] {
     tally_internal::RecordAtCurrentPixel(counter, value());
   }
 }
@@ -60,8 +68,8 @@ inline void Record(const Counter& counter, const Value& value) {
 // pixel; an event outside any CurrentPixel counts at no pixel).
 class CurrentPixel {
  public:
-  CurrentPixel(int x, int y);
-  ~CurrentPixel();
+  CurrentPixel(int x, int y) { tally_internal::current_pixel = {x, y, true}; }
+  ~CurrentPixel() { tally_internal::current_pixel.set = false; }
   CurrentPixel(const CurrentPixel&) = delete;
   CurrentPixel& operator=(const CurrentPixel&) = delete;
 };
