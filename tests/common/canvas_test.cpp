@@ -72,8 +72,9 @@ TEST_CASE("GetPixel refuses a pixel off the canvas", "[canvas]") {
   CHECK_THROWS_AS(canvas.GetPixel(2, 0), std::out_of_range);
 }
 
-TEST_CASE("The canvas counts every PutPixel, at its pixel or off the canvas, while a Tallying lives",
-          "[canvas]") {
+TEST_CASE(
+    "The canvas counts every PutPixel, at its pixel or off the canvas, while a Tallying lives",
+    "[canvas]") {
   Canvas canvas(4, 2);
   canvas.PutPixel(-2, 0, cgfs::kRed);  // before: not counted
   std::vector<long> counts;
