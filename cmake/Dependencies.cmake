@@ -28,6 +28,11 @@ cgfs_require_package(PNG_FOUND libpng-dev "libpng")
 find_package(JPEG QUIET)
 cgfs_require_package(JPEG_FOUND libjpeg-dev "libjpeg (libjpeg-turbo)")
 
+# Models (--model FILE.obj, program/src/model_file.cpp): Wavefront OBJ files read by
+# tinyobjloader, in its double-precision build.
+find_package(tinyobjloader QUIET CONFIG)
+cgfs_require_package(tinyobjloader_FOUND libtinyobjloader-dev "tinyobjloader")
+
 # --window (program/src/window.cpp): optional, so that a build without a display
 # library still builds every chapter; without it --window says how to get it.
 pkg_check_modules(SDL2 QUIET IMPORTED_TARGET sdl2)

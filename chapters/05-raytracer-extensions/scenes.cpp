@@ -1,10 +1,15 @@
 #include "scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "cost.h"
 #include "csg.h"
@@ -127,6 +132,37 @@ Scene SceneTorusMesh() {
                        triangle.surface.specular});
   }
   scene.Add(Sphere{{0, -5001, 0}, 5000, {110, 170, 110}, 1000});
+  scene.lights = ChapterLights();
+  return scene;
+}
+
+// A model of the reader's own (--model): scaled and moved so that its bounding sphere
+// has radius 1 and its centre 3 units ahead of the camera, on a ground at its lowest
+// point, lit by the chapter's lights.
+Scene SceneModel(const std::vector<Triangle>& triangles) {
+  Vec3 low = triangles.front().A;
+  Vec3 high = low;
+  for (const Triangle& triangle : triangles) {
+    low = glm::min(low, glm::min(triangle.A, glm::min(triangle.B, triangle.C)));
+    high = glm::max(high, glm::max(triangle.A, glm::max(triangle.B, triangle.C)));
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Triangle& triangle : triangles) {
+    for (const Vec3& corner : {triangle.A, triangle.B, triangle.C}) {
+      radius = std::max(radius, glm::length(corner - centre));
+    }
+  }
+  const auto placed = [&](const Vec3& corner) {
+    return (corner - centre) / radius + Vec3(0, 0, 3);
+  };
+  Scene scene;
+  scene.background_color = {200, 220, 255};
+  for (const Triangle& triangle : triangles) {
+    scene.Add(Triangle{placed(triangle.A), placed(triangle.B), placed(triangle.C),
+                       triangle.surface.color, triangle.surface.specular});
+  }
+  scene.Add(Sphere{{0, (low.y - centre.y) / radius - 5000, 0}, 5000, {110, 170, 110}, 1000});
   scene.lights = ChapterLights();
   return scene;
 }
@@ -345,9 +381,35 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
   };
 }
 
+// The reader's model through the hierarchy, and the box and object tests of each
+// pixel's camera ray there.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const std::vector<Triangle>> model = settings.model;
+  const std::string about =
+      settings.model_name + ", " + std::to_string(model->size()) + " triangles";
+  const std::function<Scene()> scene = [model] { return SceneModel(*model); };
+  Optimizations hierarchy = settings.optimizations;
+  hierarchy.bvh = true;
+  std::vector<cgfs::Figure> figures = {
+      SceneFigure("model", about + ", traced", scene,
+                  [optimizations = settings.optimizations](const Scene& shown, Canvas& canvas) {
+                    RenderSceneAsChosen(shown, 3, canvas, optimizations);
+                  }),
+      CostFigure("model-tests",
+                 about + ": box and object tests per camera ray through the hierarchy, on a "
+                         "log scale to 10 001",
+                 scene, TestsCounted(hierarchy), 10001),
+  };
+  cgfs::SetCostView(figures, "model", "model-tests");
+  return figures;
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   const Optimizations optimizations = settings.optimizations;
   // The main loop --optimizations chooses, with reflections `depth` deep.
   const auto traced = [optimizations](int depth) {

@@ -39,5 +39,10 @@ Scene SceneGlassSphere();
 // A glass lens (the CSG lens) held in front of a wall of small spheres: a magnifying glass.
 Scene SceneMagnifyingGlass();
 
-// Every figure this chapter draws, made with `settings`.
+// A model of the reader's own (--model), in front of the camera on a ground, lit by
+// the chapter's lights.
+Scene SceneModel(const std::vector<Triangle>& triangles);
+
+// Every figure this chapter draws, made with `settings`; with a model in them, only the
+// figures of it.
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);

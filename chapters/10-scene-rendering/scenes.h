@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "options.h"
 #include "program/figure.h"
 #include "scene_rendering.h"
 
@@ -17,5 +18,9 @@ const Model& CubeModel();
 Scene SceneTwoCubes();
 Scene SceneTransformedCubes();
 
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();
+// A model of the reader's own (--model) seen from a camera at the origin: scaled and
+// moved so that its bounding sphere has radius 1 and its centre 3 units ahead.
+Scene SceneModel(const Model& model);
+
+// Every figure this chapter draws; with a model in `settings`, only the figure of it.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings = {});

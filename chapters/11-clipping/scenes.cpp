@@ -1,7 +1,12 @@
 #include "scenes.h"
 
+#include <algorithm>
 #include <functional>
+#include <memory>
 #include <string>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7.
 const Model& CubeModel() {
@@ -66,6 +71,23 @@ Scene SceneCubeCutByNearPlane() {
   return scene;
 }
 
+Scene SceneModel(const Model& model) {
+  Vec3 low = model.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& vertex : model.vertices) {
+    low = glm::min(low, vertex);
+    high = glm::max(high, vertex);
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Vec3& vertex : model.vertices) {
+    radius = std::max(radius, glm::length(vertex - centre));
+  }
+  Scene scene;
+  scene.instances = {{&model, {1 / radius, glm::dmat4(1.0), Vec3(0, 0, 3) - centre / radius}}};
+  return scene;
+}
+
 namespace {
 
 // A figure of a scene, drawn by RenderScene, whose camera --window and --view can move.
@@ -79,9 +101,20 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
           }};
 }
 
+// The reader's model, and how many triangles it has.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const Model> model = settings.model;
+  const std::string about =
+      settings.model_name + ", " + std::to_string(model->triangles.size()) + " triangles";
+  return {SceneFigure("model", about + ", as a wireframe", [model] { return SceneModel(*model); })};
+}
+
 }  // namespace
 
-std::vector<cgfs::Figure> Figures() {
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   return {
       SceneFigure(
           "clipped-scene",

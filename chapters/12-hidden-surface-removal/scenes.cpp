@@ -1,10 +1,15 @@
 #include "scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "program/cost_view.h"
 
@@ -186,6 +191,23 @@ Scene SceneOpenBoxSaidClosed() {
   return scene;
 }
 
+Scene SceneModel(const Model& model) {
+  Vec3 low = model.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& vertex : model.vertices) {
+    low = glm::min(low, vertex);
+    high = glm::max(high, vertex);
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Vec3& vertex : model.vertices) {
+    radius = std::max(radius, glm::length(vertex - centre));
+  }
+  Scene scene;
+  scene.instances = {{&model, {1 / radius, glm::dmat4(1.0), Vec3(0, 0, 3) - centre / radius}}};
+  return scene;
+}
+
 namespace {
 
 // A figure of a scene, drawn by RenderScene with `method`, whose camera --window and
@@ -227,9 +249,25 @@ cgfs::Figure OverdrawFigure(const std::string& figure, const std::string& captio
   return overdraw;
 }
 
+// The reader's model with the depth buffer (back faces culled if it is closed), and
+// with its triangles' edges outlined.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const Model> model = settings.model;
+  const std::string about = settings.model_name + ", " + std::to_string(model->triangles.size()) +
+                            " triangles, " +
+                            (model->closed ? "closed: back faces culled" : "not closed");
+  const std::function<Scene()> scene = [model] { return SceneModel(*model); };
+  return {SceneFigure("model", about + ", the depth buffer", scene, {}),
+          SceneFigure("model-outlines", about + ", each triangle's edges outlined", scene,
+                      {.outlines = true})};
+}
+
 }  // namespace
 
-std::vector<cgfs::Figure> Figures() {
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   const HiddenSurfaceRemoval model_order{.draw_order = DrawOrder::kModelOrder,
                                          .cull_back_faces = false};
   const HiddenSurfaceRemoval painters{.draw_order = DrawOrder::kPaintersAlgorithm,

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "clipping.h"
+#include "options.h"
 #include "program/figure.h"
 #include "scene_rendering.h"
 
@@ -38,5 +39,10 @@ Scene SceneOpenBox();
 // inside faces.
 Scene SceneOpenBoxSaidClosed();
 
-// Every figure this chapter draws.
-std::vector<cgfs::Figure> Figures();
+// A model of the reader's own (--model) seen from a camera at the origin: scaled and
+// moved so that its bounding sphere has radius 1 and its centre 3 units ahead.
+Scene SceneModel(const Model& model);
+
+// Every figure this chapter draws, made with `settings`; with a model in them, only the
+// figures of it.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings = {});

@@ -1,7 +1,12 @@
 #include "scenes.h"
 
+#include <algorithm>
 #include <functional>
+#include <memory>
 #include <string>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "sphere_model.h"
 
@@ -131,6 +136,24 @@ Scene SceneRaytracerSpheres() {
   return scene;
 }
 
+Scene SceneModel(const Model& model) {
+  Vec3 low = model.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& vertex : model.vertices) {
+    low = glm::min(low, vertex);
+    high = glm::max(high, vertex);
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Vec3& vertex : model.vertices) {
+    radius = std::max(radius, glm::length(vertex - centre));
+  }
+  Scene scene;
+  scene.lights = ShadingLights();
+  scene.instances = {{&model, {1 / radius, glm::dmat4(1.0), Vec3(0, 0, 3) - centre / radius}}};
+  return scene;
+}
+
 namespace {
 
 // The systematic name of a shading: e.g. "phong-model-normals-diffuse-specular".
@@ -176,9 +199,25 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
           }};
 }
 
+// The reader's model flat-shaded with its triangles' normals, and Phong-shaded with
+// the model's.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const Model> model = settings.model;
+  const std::string about = settings.model_name + ", " + std::to_string(model->triangles.size()) +
+                            " triangles, " +
+                            (model->closed ? "closed: back faces culled" : "not closed");
+  const std::function<Scene()> scene = [model] { return SceneModel(*model); };
+  return {SceneFigure("model-flat", about + ", flat shading with the triangles' normals", scene,
+                      {ShadingModel::kFlat, NormalSource::kTriangle, {}}),
+          SceneFigure("model", about + ", Phong shading with the model's normals", scene, {})};
+}
+
 }  // namespace
 
-std::vector<cgfs::Figure> Figures() {
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   std::vector<cgfs::Figure> figures;
   // The base scene in every combination: shading model x normals x lighting terms.
   for (const ShadingModel model :

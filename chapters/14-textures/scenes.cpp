@@ -7,6 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 #include "program/cost_view.h"
 
 // "Representing a Cube" (Figure 10-1): vertices A..H are 0..7. "Normals": each face's
@@ -146,6 +149,28 @@ Scene SceneMinifiedCheckerboard() {
   return scene;
 }
 
+Scene SceneModel(const std::vector<Model>& parts) {
+  const Model& model = parts.front();  // every part has all the vertices
+  Vec3 low = model.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& vertex : model.vertices) {
+    low = glm::min(low, vertex);
+    high = glm::max(high, vertex);
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Vec3& vertex : model.vertices) {
+    radius = std::max(radius, glm::length(vertex - centre));
+  }
+  Scene scene;
+  scene.lights = ShadingLights();
+  const Transform placed{1 / radius, glm::dmat4(1.0), Vec3(0, 0, 3) - centre / radius};
+  for (const Model& part : parts) {
+    scene.instances.push_back({&part, placed});
+  }
+  return scene;
+}
+
 namespace {
 
 // "Mipmapping", Figure 14-12: the chain's levels side by side, each drawn half as
@@ -261,9 +286,31 @@ std::shared_ptr<const MipmappedTexture> CloseUpTexture(const ChapterSettings& se
   return small;
 }
 
+// The reader's model flat-shaded with its triangles' normals, and with everything:
+// Phong shading with the model's normals, textured perspective-correct and trilinear.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const std::vector<Model>> model = settings.model;
+  const auto textures = settings.model_textures;  // kept as long as the figures
+  std::size_t triangles = 0;
+  for (const Model& part : *model) {
+    triangles += part.triangles.size();
+  }
+  const std::string about = settings.model_name + ", " + std::to_string(triangles) +
+                            " triangles, " +
+                            (model->front().closed ? "closed: back faces culled" : "not closed");
+  const std::function<Scene()> scene = [model, textures] { return SceneModel(*model); };
+  return {SceneFigure("model-flat", about + ", flat shading with the triangles' normals", scene,
+                      {ShadingModel::kFlat, NormalSource::kTriangle, {}, {}}),
+          SceneFigure("model", about + ", Phong shading, textured perspective-correct, trilinear",
+                      scene, {})};
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   using enum TextureFilter;
   using enum TextureInterpolation;
   // The models and their textures live as long as the figures that draw them.

@@ -39,5 +39,11 @@ Scene SceneCrateCloseUp(const Model& crate);
 // Figure 14-11: a one-texel checkerboard on a small square and on a floor.
 Scene SceneMinifiedCheckerboard();
 
-// Every figure this chapter draws, made with `settings`.
-std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);
+// A model of the reader's own (--model) seen from a camera at the origin: scaled and
+// moved so that its bounding sphere has radius 1 and its centre 3 units ahead, lit by the lights of
+// chapter 13's figures; each part of it (one Model per texture, see options.h) placed alike.
+Scene SceneModel(const std::vector<Model>& parts);
+
+// Every figure this chapter draws, made with `settings`; with a model in them, only the
+// figures of it.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings = {});

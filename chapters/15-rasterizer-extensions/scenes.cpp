@@ -234,6 +234,32 @@ Scene SceneEverything(const Model& crate) {
   return scene;
 }
 
+// Chapter 14's, on a floor at the model's lowest point, lit from above and to the left
+// of the camera so that its shadow falls on the floor behind it.
+Scene SceneModel(const std::vector<Model>& parts) {
+  static const Model floor = Floor(0);
+  const Model& model = parts.front();  // every part has all the vertices
+  Vec3 low = model.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& vertex : model.vertices) {
+    low = glm::min(low, vertex);
+    high = glm::max(high, vertex);
+  }
+  const Vec3 centre = (low + high) / 2.0;
+  double radius = 0;
+  for (const Vec3& vertex : model.vertices) {
+    radius = std::max(radius, glm::length(vertex - centre));
+  }
+  Scene scene;
+  scene.lights = {{LightType::kAmbient, 0.2}, {LightType::kPoint, 0.8, {-3, 4, 0}}};
+  const Transform placed{1 / radius, glm::dmat4(1.0), Vec3(0, 0, 3) - centre / radius};
+  for (const Model& part : parts) {
+    scene.instances.push_back({&part, placed});
+  }
+  scene.instances.push_back({&floor, {1, glm::dmat4(1.0), {0, (low.y - centre.y) / radius, 0}}});
+  return scene;
+}
+
 namespace {
 
 // "Environment Mapping": a cube map unfolded as a cross, each face `size` pixels
@@ -481,9 +507,42 @@ std::vector<cgfs::Figure> EnvironmentFigures(const ChapterSettings& settings) {
   };
 }
 
+// The reader's model flat-shaded with its triangles' normals; with chapter 14's
+// everything; and with filtered shadow maps.
+std::vector<cgfs::Figure> ModelFigures(const ChapterSettings& settings) {
+  const std::shared_ptr<const std::vector<Model>> model = settings.model;
+  const auto textures = settings.model_textures;  // kept as long as the figures
+  std::size_t triangles = 0;
+  for (const Model& part : *model) {
+    triangles += part.triangles.size();
+  }
+  const std::string about = settings.model_name + ", " + std::to_string(triangles) +
+                            " triangles, " +
+                            (model->front().closed ? "closed: back faces culled" : "not closed");
+  const std::function<Scene()> scene = [model, textures] { return SceneModel(*model); };
+  return {
+      SceneFigure(
+          "model-flat", about + ", flat shading with the triangles' normals", scene,
+          [](const Scene& shown, Canvas& canvas) {
+            RenderScene(shown, canvas, {ShadingModel::kFlat, NormalSource::kTriangle, {}, {}});
+          }),
+      SceneFigure("model", about + ", Phong shading, textured perspective-correct, trilinear",
+                  scene, Extensions{}),
+      SceneFigure("model-shadow-map",
+                  about + ", on a floor it casts its shadow on (shadow maps, filtered)", scene,
+                  With([](Extensions& e) {
+                    e.shadows = Shadows::kShadowMaps;
+                    e.shadow_mapping.percentage_closer_filtering = true;
+                  })),
+  };
+}
+
 }  // namespace
 
 std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
+  if (settings.model) {
+    return ModelFigures(settings);
+  }
   std::vector<cgfs::Figure> figures = NormalMapFigures();
   for (auto group : {ShadowFigures(), ShadowCostFigures(), EnvironmentFigures(settings)}) {
     figures.insert(figures.end(), group.begin(), group.end());

@@ -74,5 +74,12 @@ Scene SceneEverything(const Model& crate);
 // pixels read each pixel's entry (-1 where it reads none).
 std::vector<long> PixelsSharingEntry(const std::vector<long>& entries);
 
-// Every figure this chapter draws, made with `settings`.
-std::vector<cgfs::Figure> Figures(const ChapterSettings& settings);
+// A model of the reader's own (--model) seen from a camera at the origin: scaled and
+// moved so that its bounding sphere has radius 1 and its centre 3 units ahead; each
+// part of it (one Model per texture, see options.h) placed alike, on a floor at its
+// lowest point, lit by an ambient light and a point light above and to the left.
+Scene SceneModel(const std::vector<Model>& parts);
+
+// Every figure this chapter draws, made with `settings`; with a model in them, only the
+// figures of it.
+std::vector<cgfs::Figure> Figures(const ChapterSettings& settings = {});

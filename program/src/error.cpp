@@ -51,6 +51,9 @@ void FlushStandardOutput() {
   }
 }
 
+// The program's name, for warnings (RunReportingErrors sets it).
+std::string program_name = "cgfs";
+
 int Report(std::string_view program, const std::string& message, bool usage) {
   std::cerr << program << ": error: " << OneLine(message) << (usage ? " (try --help)" : "") << "\n";
   return 2;
@@ -59,6 +62,7 @@ int Report(std::string_view program, const std::string& message, bool usage) {
 }  // namespace
 
 int RunReportingErrors(std::string_view program, const std::function<int()>& body) {
+  program_name = program;
   try {
     const int status = body();
     FlushStandardOutput();
@@ -79,6 +83,10 @@ int RunReportingErrors(std::string_view program, const std::function<int()>& bod
     // string too long...): still one line, never std::terminate.
     return Report(program, error.what(), false);
   }
+}
+
+void Warn(std::string_view message) {
+  std::cerr << program_name << ": warning: " << OneLine(message) << "\n";
 }
 
 }  // namespace cgfs

@@ -15,6 +15,7 @@
 
 #include "image_decoders.h"
 #include "program/error.h"
+#include "program/file_reading.h"
 #include "program/safe_file.h"
 
 namespace cgfs {
@@ -55,45 +56,6 @@ std::string EncodePpm(const Image& image) {
       "P6\n" + std::to_string(image.Width()) + " " + std::to_string(image.Height()) + "\n255\n";
   encoded.append(image.Bytes().begin(), image.Bytes().end());
   return encoded;
-}
-
-// A regular file (after symbolic links) of at most kMaxFileBytes: never a FIFO that
-// blocks, a device without end such as /dev/zero, a folder or a symbolic-link loop.
-// The size the file system states is only a hint (files in /proc state 0): the file
-// is read to its end, and refused once past the limit.
-std::string ReadWholeFile(const fs::path& path) {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (error) {
-    throw Error("cannot read " + Quoted(path) + ": " + error.message());
-  }
-  if (status.type() == fs::file_type::directory) {
-    throw Error("cannot read " + Quoted(path) + ": it is a directory");
-  }
-  if (status.type() != fs::file_type::regular) {
-    throw Error("cannot read " + Quoted(path) + ": not a regular file");
-  }
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
-  if (!file) {
-    throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
-  }
-  std::string bytes;
-  char chunk[1 << 16];
-  for (;;) {
-    const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
-    bytes.append(chunk, got);
-    if (bytes.size() > kMaxFileBytes) {
-      throw Error(Quoted(path) + " is too large: more than " + std::to_string(kMaxFileBytes) +
-                  " bytes");
-    }
-    if (got < sizeof chunk) {
-      break;
-    }
-  }
-  if (std::ferror(file.get())) {
-    throw Error("cannot read " + Quoted(path) + ": " + std::strerror(errno));
-  }
-  return bytes;
 }
 
 // PPM, binary ("P6") or plain ("P3"): a header of whitespace-separated decimal
@@ -230,7 +192,7 @@ Image DecodeImage(const std::string& bytes, const fs::path& path) {
 }
 
 Image ReadImage(const fs::path& path) {
-  return DecodeImage(ReadWholeFile(path), path);
+  return DecodeImage(ReadWholeFile(path, kMaxFileBytes), path);
 }
 
 }  // namespace cgfs

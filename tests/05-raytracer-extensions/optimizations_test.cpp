@@ -22,7 +22,9 @@ using cgfs::test::IsSameImageAs;
 namespace {
 
 cgfs::Image Draw(const std::string& figure, int side, const Optimizations& optimizations) {
-  return cgfs::RenderFigure(FindFigure(Figures({optimizations}), figure), side, side).GetImage();
+  ChapterSettings settings;
+  settings.optimizations = optimizations;
+  return cgfs::RenderFigure(FindFigure(Figures(settings), figure), side, side).GetImage();
 }
 
 }  // namespace

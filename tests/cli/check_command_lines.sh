@@ -9,25 +9,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 
-# expect STATUS DESCRIPTION COMMAND...: the command exits with STATUS; an error
-# (status 2) is exactly one line on standard error.
-expect() {
-  local want=$1 what=$2
-  shift 2
-  "$@" >"$work/stdout" 2>"$work/stderr"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit status $got, expected $want"
-    cat "$work/stderr"
-    failures=$((failures + 1))
-  elif [ "$want" -eq 2 ] && [ "$(wc -l <"$work/stderr")" -ne 1 ]; then
-    echo "FAIL: $what: the error is not one line:"
-    cat "$work/stderr"
-    failures=$((failures + 1))
-  else
-    echo "ok: $what (exit $want)$( [ "$want" -eq 2 ] && echo ": $(cat "$work/stderr")")"
-  fi
-}
+source "$(dirname "$0")/expect.sh"
 
 figures=$work/figures
 expect 0 "renders one figure" "$program" --output "$figures" --figure fig-2-11

@@ -15,6 +15,7 @@
 
 #include "program/error.h"
 #include "program/image_files.h"
+#include "temporary_folder.h"
 
 namespace fs = std::filesystem;
 using cgfs::Image;
@@ -22,29 +23,7 @@ using cgfs::Rgb8;
 
 namespace {
 
-// The folders TemporaryFolder made, removed when the test program ends.
-struct MadeFolders {
-  std::vector<fs::path> paths;
-  ~MadeFolders() {
-    for (const fs::path& path : paths) {
-      std::error_code ignored;
-      fs::remove_all(path, ignored);
-    }
-  }
-};
-
-// A fresh, empty folder per test case.
-fs::path TemporaryFolder() {
-  static int counter = 0;
-  static MadeFolders made;
-  const fs::path folder =
-      fs::temp_directory_path() /
-      ("cgfs-image-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  made.paths.push_back(folder);
-  return folder;
-}
+fs::path TemporaryFolder() { return cgfs::test::TemporaryFolder("cgfs-image-io-test"); }
 
 void WriteText(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

@@ -36,4 +36,9 @@ class UsageError : public Error {
 // returns the body's status.
 int RunReportingErrors(std::string_view program, const std::function<int()>& body);
 
+// Something left out that the user should know of, while the program goes on (a model's
+// material library that cannot be read): one line on standard error,
+// "PROGRAM: warning: ...", PROGRAM as RunReportingErrors was given it.
+void Warn(std::string_view message);
+
 }  // namespace cgfs

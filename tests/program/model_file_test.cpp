@@ -1,0 +1,156 @@
+// Wavefront OBJ models (program/model_file.h): what a file gives, and one clear line
+// for every file that is not a model, or too much of one, before memory is taken.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "program/error.h"
+#include "program/model_file.h"
+#include "temporary_folder.h"
+
+namespace fs = std::filesystem;
+using cgfs::ModelFile;
+using cgfs::ReadModelFile;
+
+namespace {
+
+fs::path ModelFolder() {
+  return cgfs::test::TemporaryFolder("cgfs-model-file-test");
+}
+
+fs::path Written(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// A unit square in z = 0 of two triangles, then whatever `more` adds.
+std::string Square(const std::string& more = "") {
+  return "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n" + more;
+}
+
+// The message ReadModelFile refuses `text` with; empty if it reads it.
+std::string Refusal(const std::string& text) {
+  const fs::path file = Written(ModelFolder() / "model.obj", text);
+  try {
+    ReadModelFile(file);
+    return "";
+  } catch (const cgfs::Error& error) {
+    return error.what();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a model file gives its triangles, normals, texture coordinates and materials") {
+  const fs::path folder = ModelFolder();
+  Written(folder / "look.mtl", "newmtl red\nKd 1 0 0\nmap_Kd .\\crate.png\n");
+  const ModelFile model = ReadModelFile(Written(folder / "quad.obj",
+                                                "mtllib look.mtl\n"
+                                                "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\n"
+                                                "vn 0 0 1\nvt 0 0\nvt 1 1\n"
+                                                "usemtl red\nf 1/1/1 2/2/1 3/2/1 4/1/1\n"));
+  CHECK(model.positions.size() == 4);
+  CHECK(model.positions[1] == glm::dvec3(2, 0, 0));
+  REQUIRE(model.faces.size() == 2);  // the quad split by tinyobjloader
+  CHECK(model.faces[0].corners[0].position == 0);
+  CHECK(model.faces[0].corners[0].normal == 0);
+  CHECK(model.faces[0].corners[1].uv == 1);
+  CHECK(model.uvs[1] == glm::dvec2(1, 1));
+  REQUIRE(model.materials.size() == 1);
+  CHECK(model.faces[1].material == 0);
+  CHECK(model.materials[0].diffuse == glm::dvec3(255, 0, 0));
+  CHECK(model.materials[0].texture == folder / "./crate.png");  // Windows' \ read as /
+  CHECK(model.warnings.empty());
+}
+
+TEST_CASE("a model without materials is light grey, and its missing pieces are warnings") {
+  const ModelFile plain = ReadModelFile(Written(ModelFolder() / "plain.obj", Square()));
+  CHECK(plain.faces[0].material == -1);
+  CHECK(plain.faces[0].corners[0].normal == -1);
+  CHECK(plain.faces[0].corners[0].uv == -1);
+
+  const ModelFile without =
+      ReadModelFile(Written(ModelFolder() / "m.obj", Square("mtllib nowhere.mtl\n")));
+  REQUIRE(without.warnings.size() == 1);
+  CHECK_THAT(without.warnings[0],
+             Catch::Contains("nowhere.mtl") && Catch::Contains("drawn without its materials"));
+  const ModelFile flat = ReadModelFile(
+      Written(ModelFolder() / "f.obj", Square("v 0 0 0\nv 1 1 1\nv 2 2 2\nf 5 6 7\n")));
+  CHECK(flat.faces.size() == 2);
+  REQUIRE(flat.warnings.size() == 1);
+  CHECK(flat.warnings[0] == "1 triangle without an area left out");
+}
+
+TEST_CASE("a material library that is a device, a FIFO or a folder is a warning, never read") {
+  const fs::path folder = ModelFolder();
+  REQUIRE(::mkfifo((folder / "fifo.mtl").c_str(), 0600) == 0);
+  fs::create_directory(folder / "folder.mtl");
+  for (const std::string library : {"/dev/zero", "fifo.mtl", "folder.mtl"}) {
+    const ModelFile model =
+        ReadModelFile(Written(folder / "m.obj", Square("mtllib " + library + "\n")));
+    REQUIRE(model.warnings.size() == 1);
+    CHECK_THAT(model.warnings[0], Catch::Contains("drawn without its materials"));
+  }
+}
+
+TEST_CASE("files that are not models are refused in one line") {
+  CHECK_THAT(Refusal(""), Catch::Contains("has no faces"));
+  CHECK_THAT(Refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\nl 1 2\n"),
+             Catch::Contains("has no faces (points and lines are not drawn)"));
+  CHECK_THAT(Refusal("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"),
+             Catch::Contains("no triangle with an area"));
+  CHECK_THAT(Refusal(Square("f 1 2 9\n")), Catch::Contains("a face refers to vertex 9 of 4"));
+  CHECK_THAT(Refusal(Square("f 1 2 -9\n")), Catch::Contains("a face refers to vertex"));
+  CHECK_THAT(Refusal(Square("f 1 2 3 9\n")), Catch::Contains("a vertex the file does not have"));
+  CHECK_THAT(Refusal(Square("f 0 1 2\n")),
+             Catch::Contains("line 7: '0' has an index 0 (OBJ counts from 1)"));
+  CHECK_THAT(Refusal(Square("f 1/0 2/1 3/1\n")), Catch::Contains("'1/0' has an index 0"));
+  CHECK_THAT(Refusal(Square("f 1//-0 2 3\n")), Catch::Contains("'1//-0' has an index 0"));
+  CHECK_THAT(Refusal(Square("f 1/5 2/5 3/5\n")), Catch::Contains("texture coordinate 5 of 0"));
+  CHECK_THAT(Refusal(Square("f 1//2 2//2 3//2\n")), Catch::Contains("normal 2 of 0"));
+  CHECK_THAT(Refusal("v nan 0 0\n" + Square()), Catch::Contains("line 1: 'nan' is not a number"));
+  CHECK_THAT(Refusal("v 1e999 0 0\n" + Square()), Catch::Contains("not a finite number"));
+  CHECK_THAT(Refusal(Square("vn -inf 0 0\n")), Catch::Contains("'-inf' is not a number"));
+  CHECK_THAT(Refusal(Square("vt 1e400 0\n")), Catch::Contains("not a finite number"));
+  CHECK_THAT(Refusal(Square("usemtl a\x1b[31mred\n")),
+             Catch::Contains("line 7: a control character"));
+  CHECK_THAT(Refusal(std::string("\xfe\xff\0v\0 \0001", 8)),
+             Catch::Contains("a NUL byte: not a text OBJ file (UTF-16 is not read)"));
+}
+
+TEST_CASE("a model too large for the machine is refused from its text, before it is parsed") {
+  std::string corners = "f";
+  for (std::size_t k = 1; k <= cgfs::kMaxPolygonCorners + 1; ++k) {
+    corners += " " + std::to_string(k);
+  }
+  CHECK_THAT(Refusal(corners + "\n"), Catch::Contains("a polygon of 1025 corners (at most 1024)"));
+  // Four million and one triangles in 36 MB: refused by counting, not by parsing.
+  std::string many;
+  many.reserve(40u << 20);
+  for (std::size_t k = 0; k <= cgfs::kMaxModelTriangles; ++k) {
+    many += "f 1 2 3\n";
+  }
+  CHECK_THAT(Refusal(Square(many)),
+             Catch::Contains("too large a model") && Catch::Contains("4000003 triangles"));
+  // A file larger than kMaxModelFileBytes, stated by its size: never read.
+  const fs::path huge = ModelFolder() / "huge.obj";
+  Written(huge, "");
+  fs::resize_file(huge, std::uintmax_t{10} << 30);  // 10 GB, sparse
+  CHECK_THROWS_WITH(ReadModelFile(huge), Catch::Contains("is too large: more than"));
+}
+
+TEST_CASE("a path that is not a regular file is refused in one line") {
+  const fs::path folder = ModelFolder();
+  REQUIRE(::mkfifo((folder / "fifo.obj").c_str(), 0600) == 0);
+  fs::create_symlink(folder / "loop.obj", folder / "loop.obj");
+  CHECK_THROWS_WITH(ReadModelFile("/dev/zero"), Catch::Contains("not a regular file"));
+  CHECK_THROWS_WITH(ReadModelFile(folder / "fifo.obj"), Catch::Contains("not a regular file"));
+  CHECK_THROWS_WITH(ReadModelFile(folder), Catch::Contains("it is a directory"));
+  CHECK_THROWS_WITH(ReadModelFile(folder / "loop.obj"), Catch::Contains("cannot read"));
+  CHECK_THROWS_WITH(ReadModelFile(folder / "missing.obj"), Catch::Contains("cannot read"));
+}
