@@ -295,6 +295,22 @@ void TakeMaterials(const std::vector<tinyobj::material_t>& materials, const fs::
   }
 }
 
+// tinyobjloader (2.0.0rc10) splits a polygon of more than four corners by clipping ears,
+// and gives up on some concave ones part of the way: what it did not make is said.
+void NoteUnsplitPolygons(const std::vector<tinyobj::shape_t>& shapes, const TextCounts& counts,
+                         ModelFile& model) {
+  std::size_t made = 0;
+  for (const tinyobj::shape_t& shape : shapes) {
+    made += shape.mesh.num_face_vertices.size();
+  }
+  if (made < counts.triangles) {
+    model.warnings.push_back("tinyobjloader split its polygons into " + std::to_string(made) +
+                             " of the " + std::to_string(counts.triangles) +
+                             " triangles they make: " + std::to_string(counts.triangles - made) +
+                             " not drawn");
+  }
+}
+
 // tinyobjloader's first error line, as ours.
 [[noreturn]] void FailParsing(const std::string& error, const fs::path& path) {
   std::string line = error.substr(0, error.find('\n'));
@@ -307,7 +323,7 @@ void TakeMaterials(const std::vector<tinyobj::material_t>& materials, const fs::
 }  // namespace
 
 ModelFile ParseModelFile(const std::string& text, const fs::path& path, const fs::path& folder) {
-  CountText(text, path);
+  const TextCounts counts = CountText(text, path);
   ModelFile model;
   MaterialLibraries libraries(folder, model.warnings);
   tinyobj::attrib_t attributes;
@@ -324,6 +340,7 @@ ModelFile ParseModelFile(const std::string& text, const fs::path& path, const fs
     throw Error(Quoted(path) + ": a face refers to a vertex the file does not have");
   }
   TakeAttributes(attributes, path, model);
+  NoteUnsplitPolygons(shapes, counts, model);
   TakeFaces(shapes, materials.size(), path, model);
   TakeMaterials(materials, libraries.Folder(), model);
   return model;

@@ -86,6 +86,18 @@ TEST_CASE("a model without materials is light grey, and its missing pieces are w
   CHECK(flat.warnings[0] == "1 triangle without an area left out");
 }
 
+TEST_CASE("triangles tinyobjloader does not make of a polygon are said") {
+  // A square's corners three times round: 12 corners make 10 triangles; tinyobjloader
+  // (2.0.0rc10) gives up after 3, as on some concave polygons.
+  const ModelFile model =
+      ReadModelFile(Written(ModelFolder() / "round.obj",
+                            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 1 2 3 4 1 2 3 4\n"));
+  CHECK(model.faces.size() == 3);
+  REQUIRE(model.warnings.size() == 1);
+  CHECK(model.warnings[0] ==
+        "tinyobjloader split its polygons into 3 of the 10 triangles they make: 7 not drawn");
+}
+
 TEST_CASE("a material library that is a device, a FIFO or a folder is a warning, never read") {
   const fs::path folder = ModelFolder();
   REQUIRE(::mkfifo((folder / "fifo.mtl").c_str(), 0600) == 0);

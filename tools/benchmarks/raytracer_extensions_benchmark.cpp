@@ -11,14 +11,30 @@
 //   SphereFieldPrimary/<count>/...   only the primary rays at 600x600, one thread:
 //                                    the chapter's hierarchy (plain or tuned), and
 //                                    Embree's where it is installed (benchmark-05)
+//   MeshPrimary/<mesh>/...           the same on triangle meshes: tori of 10 000,
+//                                    100 000 and 1 000 000 triangles, and the Wuson
+//                                    of assimp-testmodels (3 732) where installed
+//   MeshBuild/<mesh>/<hierarchy>     building the hierarchy over a mesh
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
+
 #include "benchmark_main.h"
+#include "meshes.h"
+#include "options.h"
+#include "program/model_file.h"
 #include "raytracer.h"
 #include "sampling.h"
 #include "scenes.h"
@@ -92,19 +108,107 @@ void TracePrimaryRays(benchmark::State& state, const Scene& scene, int side) {
                                                 benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// The meshes of MeshPrimary, as --model places a model (SceneModel), without the ground
+// sphere: triangles alone, as Embree is given them.
+constexpr char kWuson[] = "/usr/share/assimp/models/OBJ/WusonOBJ.obj";
+
+std::vector<Triangle> MeshTriangles(const std::string& name) {
+  if (name == "wuson") {
+    return TrianglesFromFile(cgfs::ReadModelFile(kWuson));
+  }
+  const int around = name == "torus-10000" ? 100 : name == "torus-100000" ? 250 : 1000;
+  // Tilted 55 degrees about x, as the chapter's torus-mesh figure is, so that the camera
+  // looks into its hole.
+  const double angle = -55 * std::numbers::pi / 180;
+  const glm::dmat3 tilt(1, 0, 0, 0, std::cos(angle), std::sin(angle), 0, -std::sin(angle),
+                        std::cos(angle));
+  std::vector<Triangle> tilted;
+  for (const Triangle& T : TorusMesh(1.6, 0.55, around, around / 2, {255, 120, 40})) {
+    tilted.push_back(Triangle{tilt * T.A, tilt * T.B, tilt * T.C, T.surface.color});
+  }
+  return tilted;
+}
+
+// Made on first use and kept (a million triangles take a second to make).
+const Scene& MeshScene(const std::string& name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<Scene>> scenes;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::unique_ptr<Scene>& scene = scenes[name];
+  if (!scene) {
+    scene = std::make_unique<Scene>(SceneModel(MeshTriangles(name)));
+    scene->objects.pop_back();  // the ground
+  }
+  return *scene;
+}
+
+std::vector<std::string> MeshNames() {
+  std::vector<std::string> names = {"torus-10000", "torus-100000", "torus-1000000"};
+  if (std::filesystem::exists(kWuson)) {
+    names.insert(names.begin(), "wuson");
+  } else if (std::string(CGFS_HIERARCHY) == "plain") {
+    std::fprintf(stderr,
+                 "benchmark-05: no %s (Debian assimp-testmodels): MeshPrimary/wuson "
+                 "is skipped\n",
+                 kWuson);
+  }
+  return names;
+}
+
 #if CGFS_HAVE_EMBREE
+// Embree's device and scene, released together.
+struct EmbreeScene {
+  RTCDevice device = rtcNewDevice("threads=1");
+  RTCScene scene = rtcNewScene(device);
+  EmbreeScene() = default;
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+  ~EmbreeScene() {
+    rtcReleaseScene(scene);
+    rtcReleaseDevice(device);
+  }
+};
+
+// The scene's triangles as one Embree triangle mesh (three single-precision vertices
+// each, unshared).
+void AddTriangles(const Scene& scene, EmbreeScene& embree) {
+  std::vector<const Triangle*> triangles;
+  for (const auto& object : scene.objects) {
+    if (const auto* triangle = dynamic_cast<const Triangle*>(object.get())) {
+      triangles.push_back(triangle);
+    }
+  }
+  RTCGeometry geometry = rtcNewGeometry(embree.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               3 * triangles.size()));
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(unsigned), triangles.size()));
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Vec3* corners[3] = {&triangles[i]->A, &triangles[i]->B, &triangles[i]->C};
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        vertices[9 * i + 3 * k + axis] = static_cast<float>((*corners[k])[static_cast<int>(axis)]);
+      }
+      indices[3 * i + k] = static_cast<unsigned>(3 * i + k);
+    }
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(embree.scene, geometry);
+  rtcReleaseGeometry(geometry);
+}
+
 // The same spheres as Embree sphere points (x, y, z, r in single precision), the
 // same primary rays, one at a time (rtcIntersect1), on one thread.
-void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int side) {
-  RTCDevice device = rtcNewDevice("threads=1");
-  RTCScene embree_scene = rtcNewScene(device);
+void AddSpheres(const Scene& scene, EmbreeScene& embree) {
   std::vector<const Sphere*> spheres;
   for (const auto& object : scene.objects) {
     if (const auto* sphere = dynamic_cast<const Sphere*>(object.get())) {
       spheres.push_back(sphere);
     }
   }
-  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+  RTCGeometry geometry = rtcNewGeometry(embree.device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
   auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), spheres.size()));
   for (std::size_t i = 0; i < spheres.size(); ++i) {
@@ -114,9 +218,17 @@ void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int sid
     points[4 * i + 3] = static_cast<float>(spheres[i]->radius);
   }
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(embree_scene, geometry);
+  rtcAttachGeometry(embree.scene, geometry);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(embree_scene);
+}
+
+// The scene's spheres and triangles in Embree, the same primary rays, one at a time
+// (rtcIntersect1), on one thread.
+void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int side) {
+  EmbreeScene embree;
+  AddSpheres(scene, embree);
+  AddTriangles(scene, embree);
+  rtcCommitScene(embree.scene);
 
   const Canvas canvas(side, side);
   RTCIntersectContext context;
@@ -137,7 +249,7 @@ void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int sid
         ray.ray.mask = ~0U;
         ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcInitIntersectContext(&context);
-        rtcIntersect1(embree_scene, &context, &ray);
+        rtcIntersect1(embree.scene, &context, &ray);
         hits += ray.hit.geomID != RTC_INVALID_GEOMETRY_ID;
       }
     }
@@ -145,10 +257,36 @@ void TracePrimaryRaysEmbree(benchmark::State& state, const Scene& scene, int sid
   }
   state.counters["rays/s"] = benchmark::Counter(static_cast<double>(side) * side,
                                                 benchmark::Counter::kIsIterationInvariantRate);
-  rtcReleaseScene(embree_scene);
-  rtcReleaseDevice(device);
 }
 #endif
+
+// MeshPrimary and MeshBuild for every mesh.
+void RegisterMeshes() {
+  for (const std::string& name : MeshNames()) {
+    benchmark::RegisterBenchmark(
+        ("MeshPrimary/" + name + "/" + CGFS_HIERARCHY).c_str(),
+        [name](benchmark::State& state) { TracePrimaryRays(state, MeshScene(name), 600); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+#if CGFS_HAVE_EMBREE
+    benchmark::RegisterBenchmark(
+        ("MeshPrimary/" + name + "/embree").c_str(),
+        [name](benchmark::State& state) { TracePrimaryRaysEmbree(state, MeshScene(name), 600); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+#endif
+    benchmark::RegisterBenchmark(("MeshBuild/" + name + "/" + CGFS_HIERARCHY).c_str(),
+                                 [name](benchmark::State& state) {
+                                   const Scene& scene = MeshScene(name);
+                                   for (auto _ : state) {
+                                     const Bvh bvh(scene.objects);
+                                     benchmark::DoNotOptimize(bvh.NodeCount());
+                                   }
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  }
+}
 
 }  // namespace
 
@@ -210,6 +348,7 @@ void RegisterAll() {
         ->UseRealTime();
 #endif
   }
+  RegisterMeshes();
 #if !CGFS_HAVE_EMBREE
   if (std::string(CGFS_HIERARCHY) == "plain") {
     std::fprintf(stderr,
