@@ -177,7 +177,8 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
   const auto test = [&](int slot) {
     cgfs::Tally(kObjectTests);
     const int candidate = order_[slot];
-    const Hit hit = IntersectSlot(slot, ray, t_min, t_max);
+    // Only as far as the best hit so far (a tie there still counts).
+    const Hit hit = IntersectSlot(slot, ray, t_min, std::min(t_max, best.t));
     // On a tie the lower index wins, as in the plain loop, which keeps the first.
     if (hit.t < best.t || (hit.t == best.t && hit.t < cgfs::kInf && candidate < object)) {
       best = hit;

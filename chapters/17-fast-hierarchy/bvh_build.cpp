@@ -123,6 +123,9 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   std::vector<LeafSphere> scene_spheres;
   std::vector<int> sphere_of;
   sphere_of.reserve(objects.size());
+  std::vector<LeafTriangle> scene_triangles;  // and the triangles' (Triangle is final too)
+  std::vector<int> triangle_of;
+  triangle_of.reserve(objects.size());
   for (const auto& pointer : objects) {
     const Object& object = *pointer;
     objects_.push_back(&object);
@@ -134,6 +137,12 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
                                                             : -1);
     if (sphere_of.back() >= 0) {
       scene_spheres.push_back({sphere->center, sphere->cache});
+    }
+    const auto* triangle =
+        typeid(object) == typeid(Triangle) ? static_cast<const Triangle*>(&object) : nullptr;
+    triangle_of.push_back(triangle != nullptr ? static_cast<int>(scene_triangles.size()) : -1);
+    if (triangle != nullptr) {
+      scene_triangles.push_back({triangle->A, triangle->B, triangle->C, triangle->N});
     }
   }
   const int count = static_cast<int>(objects.size());
@@ -153,6 +162,11 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
     slot_spheres_.push_back(sphere >= 0 ? static_cast<int>(spheres_.size()) : -1);
     if (sphere >= 0) {
       spheres_.push_back(scene_spheres[sphere]);
+    }
+    const int triangle = triangle_of[item.object];
+    slot_triangles_.push_back(triangle >= 0 ? static_cast<int>(triangles_.size()) : -1);
+    if (triangle >= 0) {
+      triangles_.push_back(scene_triangles[triangle]);
     }
   }
 }

@@ -87,27 +87,13 @@ Triangle::Triangle(Vec3 a, Vec3 b, Vec3 c, Color color, double specular, double 
 // the inner side of every edge, that is when each (edge x (P - edge start)) points
 // the same way as N. Points on an edge count as inside.
 double IntersectRayTriangle(const Vec3& O, const Vec3& D, const Triangle& triangle) {
-  const Vec3& N = triangle.N;
-  const double N_dot_D = glm::dot(N, D);
-  if (N_dot_D == 0) {
-    return cgfs::kInf;  // parallel to the plane: no single point of contact
-  }
-  const double plane_D = -glm::dot(N, triangle.A);  // the plane is <N,P> + plane_D = 0
-  const double t = -(glm::dot(N, O) + plane_D) / N_dot_D;
-  const Vec3 P = O + t * D;
-  const Vec3& A = triangle.A;
-  const Vec3& B = triangle.B;
-  const Vec3& C = triangle.C;
-  if (glm::dot(glm::cross(B - A, P - A), N) < 0 || glm::dot(glm::cross(C - B, P - B), N) < 0 ||
-      glm::dot(glm::cross(A - C, P - C), N) < 0) {
-    return cgfs::kInf;
-  }
-  return t;
+  return IntersectRayTriangle(O, D, triangle.A, triangle.B, triangle.C, triangle.N, -cgfs::kInf,
+                              cgfs::kInf);
 }
 
 Hit Triangle::Intersect(const Ray& ray, double t_min, double t_max) const {
-  const double t = IntersectRayTriangle(ray.O, ray.D, *this);
-  if (t_min <= t && t <= t_max && t < cgfs::kInf) {
+  const double t = IntersectRayTriangle(ray.O, ray.D, A, B, C, N, t_min, t_max);
+  if (t < cgfs::kInf) {
     return {t, this};
   }
   return {};
