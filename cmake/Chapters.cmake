@@ -6,7 +6,7 @@
 # done with the student's folder of the same name instead of ours, so our tests
 # judge the student's code (docs/students.md):
 #   - a chapter the student has not started has no targets; its tests are skipped;
-#   - a header or main.cpp the student's folder lacks is taken from ours;
+#   - a header, main.cpp or options.cpp the student's folder lacks is taken from ours;
 #   - a book function the student has not written yet is linked to a stand-in that
 #     throws "not written yet: Name" (cmake/NotWrittenYet.cmake), so the tests of
 #     what is written run, and the others are reported as not written yet.
@@ -106,6 +106,12 @@ function(cgfs_add_chapter chapter)
 
   file(GLOB sources CONFIGURE_DEPENDS "${dir}/*.cpp")
   list(FILTER sources EXCLUDE REGEX "/main\\.cpp$")
+  # A student's chapter without options.cpp, the command line's own options (--model,
+  # --texture...), which is no book code, takes ours, as it takes main.cpp.
+  set(our_options "${PROJECT_SOURCE_DIR}/chapters/${chapter}/options.cpp")
+  if(CGFS_STUDENT_DIR AND sources AND NOT EXISTS "${dir}/options.cpp" AND EXISTS "${our_options}")
+    list(APPEND sources "${our_options}")
+  endif()
   if(NOT sources)
     # A folder with headers only: every function is "not written yet".
     set(sources "${CMAKE_BINARY_DIR}/not-written-yet/${chapter}-nothing.cpp")
