@@ -30,7 +30,9 @@ constexpr std::uintmax_t kMaxMaterialFileBytes = 16u << 20;
 // tinyobjloader's ear clipping takes up to n^3 steps for n corners.
 constexpr double kMaxPolygonWork = 4.0e9;
 
-std::string LineNumber(std::size_t line) { return "line " + std::to_string(line); }
+std::string LineNumber(std::size_t line) {
+  return "line " + std::to_string(line);
+}
 
 // What a file holds, counted on its text before tinyobjloader is given it, so that
 // nothing too large for the machine is ever allocated or split.
@@ -65,7 +67,8 @@ bool HasIndexZero(std::string_view corner) {
   return false;
 }
 
-// One line's first word, and how many words follow it.
+// One line, counted (a vertex, or the triangles a face makes once split), with its
+// coordinates and indices checked.
 void CountLine(std::string_view line, std::size_t number, std::array<std::size_t, 3>& vertices,
                TextCounts& counts, double& polygon_work, const fs::path& path) {
   std::size_t words = 0;
@@ -121,11 +124,15 @@ TextCounts CountText(const std::string& text, const fs::path& path) {
   std::size_t number = 1;
   std::size_t start = 0;
   for (std::size_t at = 0; at <= text.size(); ++at) {
+    // Lines end in LF, CR LF or CR alone, as tinyobjloader reads them.
     const unsigned char c = at < text.size() ? static_cast<unsigned char>(text[at]) : '\n';
-    if (c == '\n') {
+    if (c == '\n' || c == '\r') {
       CountLine(std::string_view(text).substr(start, at - start), number, vertices, counts,
                 polygon_work, path);
       ++number;
+      if (c == '\r' && at + 1 < text.size() && text[at + 1] == '\n') {
+        ++at;
+      }
       start = at + 1;
     } else if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
       throw Error(Quoted(path) + ", " + LineNumber(number) +
@@ -228,8 +235,7 @@ int CheckedIndex(int index, std::size_t count, bool optional, const char* what,
   }
   if (index < 0 || static_cast<std::size_t>(index) >= count) {
     throw Error(Quoted(path) + ": a face refers to " + what + " " +
-                std::to_string(static_cast<long long>(index) + 1) + " of " +
-                std::to_string(count));
+                std::to_string(static_cast<long long>(index) + 1) + " of " + std::to_string(count));
   }
   return index;
 }
@@ -255,11 +261,11 @@ void TakeFaces(const std::vector<tinyobj::shape_t>& shapes, std::size_t material
         face.corners[k] = {
             CheckedIndex(index.vertex_index, model.positions.size(), false, "vertex", path),
             CheckedIndex(index.normal_index, model.normals.size(), true, "normal", path),
-            CheckedIndex(index.texcoord_index, model.uvs.size(), true, "texture coordinate",
-                         path)};
+            CheckedIndex(index.texcoord_index, model.uvs.size(), true, "texture coordinate", path)};
       }
       const int material = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
-      face.material = material >= 0 && static_cast<std::size_t>(material) < materials ? material : -1;
+      face.material =
+          material >= 0 && static_cast<std::size_t>(material) < materials ? material : -1;
       if (HasArea(model, face)) {
         model.faces.push_back(face);
       } else {

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -66,6 +67,18 @@ TEST_CASE("a model file gives its triangles, normals, texture coordinates and ma
   CHECK(model.materials[0].diffuse == glm::dvec3(255, 0, 0));
   CHECK(model.materials[0].texture == folder / "./crate.png");  // Windows' \ read as /
   CHECK(model.warnings.empty());
+}
+
+TEST_CASE("lines may end in CR LF or CR alone") {
+  std::string crlf = Square();
+  std::string cr = Square();
+  for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) {
+    crlf.insert(at, "\r");
+  }
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  CHECK(ReadModelFile(Written(ModelFolder() / "crlf.obj", crlf)).faces.size() == 2);
+  CHECK(ReadModelFile(Written(ModelFolder() / "cr.obj", cr)).faces.size() == 2);
+  CHECK_THAT(Refusal("v 0 0 0\r\nv nan 0 0\r\n"), Catch::Contains("line 2: 'nan'"));
 }
 
 TEST_CASE("a model without materials is light grey, and its missing pieces are warnings") {
