@@ -3,13 +3,14 @@
 # on the left, chapter 5's render time at 150x150 against the number of spheres, with
 # and without the hierarchy (SphereFieldSmall); on the right, the primary rays traced a
 # second by chapter 5's plain hierarchy, chapter 17's tuned one and Embree
-# (SphereFieldPrimary: 600x600 = 360 000 rays, one thread); and the same three on the
-# triangle meshes, tori of 10 000 to 1 000 000 triangles (MeshPrimary).
-# Usage: plot_sphere_fields.sh BENCHMARK-05.json BENCHMARK-17.json OUTPUT.png
+# (SphereFieldPrimary: 600x600 = 360 000 rays, one thread). With MESHES.png, the same
+# three on triangle meshes, tori of 10 000 to 1 000 000 triangles (MeshPrimary), there.
+# Usage: plot_sphere_fields.sh BENCHMARK-05.json BENCHMARK-17.json OUTPUT.png [MESHES.png]
 set -euo pipefail
 json=$1
 json_tuned=$2
 output=$3
+mesh_output=${4:-}
 data=$(mktemp)
 meshes=$(mktemp)
 trap 'rm -f "$data" "$meshes"' EXIT
@@ -37,29 +38,15 @@ awk -F'"' '
                              ((n, "embree") in time ? 360 / time[n, "embree"] : "NaN")
   }' "$json" "$json_tuned" | sort -n > "$data"
 
-# The tori: triangles, million rays a second plain, tuned and Embree.
-awk -F'"' '
-  /"name":/ { name = $4 }
-  /"real_time":/ && name ~ /^MeshPrimary\/torus-[0-9]+\/(plain|tuned|embree)\/real_time_median$/ {
-    split(name, part, "/"); sub(/torus-/, "", part[2])
-    value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
-    time[part[2], part[3]] = value; counts[part[2]] = 1
-  }
-  END {
-    for (n in counts) print n, ((n, "plain") in time ? 360 / time[n, "plain"] : "NaN"),
-                             ((n, "tuned") in time ? 360 / time[n, "tuned"] : "NaN"),
-                             ((n, "embree") in time ? 360 / time[n, "embree"] : "NaN")
-  }' "$json" "$json_tuned" | sort -n > "$meshes"
-
 if [ ! -s "$data" ]; then
   echo "plot_sphere_fields.sh: no SphereFieldSmall medians in $json" >&2
   exit 1
 fi
 
 gnuplot <<GNUPLOT
-set terminal pngcairo size 1500,460 font "sans,11"
+set terminal pngcairo size 1100,460 font "sans,11"
 set output "$output"
-set multiplot layout 1,3
+set multiplot layout 1,2
 set rmargin 5
 set xlabel "spheres"
 set logscale x
@@ -78,10 +65,38 @@ set key top right
 plot "$data" using 1:6 with linespoints lw 2 pt 9 title "Embree", \
      "$data" using 1:5 with linespoints lw 2 pt 7 title "tuned (chapter 17)", \
      "$data" using 1:4 with linespoints lw 2 pt 5 title "plain (chapter 5)"
-set title "The same on triangle meshes (tori)"
+unset multiplot
+GNUPLOT
+
+[ -n "$mesh_output" ] || exit 0
+# The tori: triangles, million rays a second plain, tuned and Embree.
+awk -F'"' '
+  /"name":/ { name = $4 }
+  /"real_time":/ && name ~ /^MeshPrimary\/torus-[0-9]+\/(plain|tuned|embree)\/real_time_median$/ {
+    split(name, part, "/"); sub(/torus-/, "", part[2])
+    value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
+    time[part[2], part[3]] = value; counts[part[2]] = 1
+  }
+  END {
+    for (n in counts) print n, ((n, "plain") in time ? 360 / time[n, "plain"] : "NaN"),
+                             ((n, "tuned") in time ? 360 / time[n, "tuned"] : "NaN"),
+                             ((n, "embree") in time ? 360 / time[n, "embree"] : "NaN")
+  }' "$json" "$json_tuned" | sort -n > "$meshes"
+if [ ! -s "$meshes" ]; then
+  echo "plot_sphere_fields.sh: no MeshPrimary medians in $json" >&2
+  exit 1
+fi
+gnuplot <<GNUPLOT
+set terminal pngcairo size 560,460 font "sans,11"
+set output "$mesh_output"
+set title "Primary rays on tori, one thread"
 set xlabel "triangles"
+set logscale x
+set grid
+set ylabel "million rays a second"
+set yrange [0:*]
+set key top right
 plot "$meshes" using 1:4 with linespoints lw 2 pt 9 title "Embree", \
      "$meshes" using 1:3 with linespoints lw 2 pt 7 title "tuned (chapter 17)", \
      "$meshes" using 1:2 with linespoints lw 2 pt 5 title "plain (chapter 5)"
-unset multiplot
 GNUPLOT
