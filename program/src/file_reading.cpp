@@ -26,8 +26,7 @@ std::string ReadWholeFile(const fs::path& path, std::uintmax_t max_bytes) {
     throw Error("cannot read " + Quoted(path) + ": not a regular file");
   }
   const auto too_large = [&] {
-    return Error(Quoted(path) + " is too large: more than " + std::to_string(max_bytes) +
-                 " bytes");
+    return Error(Quoted(path) + " is too large: more than " + std::to_string(max_bytes) + " bytes");
   };
   if (const std::uintmax_t stated = fs::file_size(path, error); !error && stated > max_bytes) {
     throw too_large();

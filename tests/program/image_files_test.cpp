@@ -23,7 +23,9 @@ using cgfs::Rgb8;
 
 namespace {
 
-fs::path TemporaryFolder() { return cgfs::test::TemporaryFolder("cgfs-image-io-test"); }
+fs::path TemporaryFolder() {
+  return cgfs::test::TemporaryFolder("cgfs-image-io-test");
+}
 
 void WriteText(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

@@ -12,8 +12,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const cgfs::ModelFile model = cgfs::ParseModelFile(
-        std::string(reinterpret_cast<const char*>(data), size), "input", "");
+    const cgfs::ModelFile model =
+        cgfs::ParseModelFile(std::string(reinterpret_cast<const char*>(data), size), "input", "");
     for (const cgfs::ModelFile::Face& face : model.faces) {
       for (const cgfs::ModelFile::Corner& corner : face.corners) {
         if (corner.position < 0 ||
