@@ -2,6 +2,4 @@
 # which compiles them with emscripten: one list, so that neither misses a file.
 set(CGFS_COMMON_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/src/canvas.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/image.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/progress.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/tally.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/image.cpp)

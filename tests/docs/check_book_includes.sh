@@ -16,13 +16,15 @@ for file in chapters/[0-9][0-9]-*/*.h chapters/[0-9][0-9]-*/*.cpp; do
   while IFS=: read -r line include; do
     name=$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]*)[>"].*/\1/' <<<"$include")
     if [[ $include =~ \" ]]; then
-      if [[ $name == cgfs/* && -f common/include/$name ]]; then continue; fi
+      if [[ $name == cgfs/* && ( -f common/include/$name || -f instrumentation/include/$name ) ]]; then
+        continue
+      fi
       if [[ $name != */* && -f $folder/$name ]] && ! program_side "$name"; then continue; fi
     else
       if [[ $name == glm/* || ($name != */* && $name != *.*) ]]; then continue; fi
     fi
     echo "FAIL: $file:$line includes $name: the book code includes only its chapter's" \
-      "book files, common/include/cgfs/, GLM and the standard library"
+      "book files, common/ and instrumentation/ (cgfs/...), GLM and the standard library"
     failed=1
   done < <(grep -nE '^[[:space:]]*#[[:space:]]*include' "$file" || true)
 done
