@@ -145,17 +145,6 @@ bool JpegReadRows(j_decompress_ptr cinfo, JpegErrors& errors, unsigned char* pix
 
 }  // namespace
 
-void CheckDeclaredSize(long long width, long long height, const fs::path& path,
-                       const std::string& kind) {
-  if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide ||
-      width * height > kMaxPixels) {
-    throw Error(Quoted(path) + " is not a valid " + kind + " image: image size " +
-                std::to_string(width) + "x" + std::to_string(height) +
-                " is out of range (at most " + std::to_string(kMaxSide) + " a side and " +
-                std::to_string(kMaxPixels) + " pixels)");
-  }
-}
-
 Image DecodePng(const std::string& bytes, const fs::path& path) {
   PngSource source{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), 0, {}};
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, PngError, PngWarning);

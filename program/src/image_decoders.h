@@ -1,6 +1,7 @@
 // The decoders ReadImage trusts with files from anywhere: libpng for PNG and
 // libjpeg-turbo for JPEG, both hardened by years of continuous fuzzing, and our own
-// reader for PPM (image_io.cpp). Private to common/.
+// reader for PPM (image_reading.cpp). Private to program/; the web pages' build has
+// image_decoders_web.cpp in its place.
 #pragma once
 
 #include <filesystem>

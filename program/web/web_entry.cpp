@@ -3,12 +3,16 @@
 // a size, and copies the pixels it gets (RGBA, as ImageData holds them) into its
 // canvas; the camera of a figure that has one moves as in the window
 // (program/camera_controls.h). A request that cannot be met returns 0 and leaves one
-// line in LastError() for the page to show.
+// line in LastError() for the page to show. A chapter with options of its own
+// (options.h) reads them from the page as its program reads them from a command line
+// (UseOptions): a model the reader chose is drawn by the chapter's own code.
 #include <emscripten.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "comparison/compare.h"
@@ -17,18 +21,26 @@
 #include "scenes.h"
 #if __has_include("options.h")
 #include "options.h"
+#include "web_options.h"
 #endif
 
 namespace {
 
-// The figures, made once with the settings a command line without options gives.
+// The figures: made, when first asked for, with the settings a command line without
+// options gives; made anew by UseOptions.
+std::vector<cgfs::Figure> chapter_figures;
+bool figures_made = false;
+
 const std::vector<cgfs::Figure>& ChapterFigures() {
+  if (!figures_made) {
 #if __has_include("options.h")
-  static const std::vector<cgfs::Figure> figures = Figures(ChapterSettings{});
+    chapter_figures = Figures(ChapterSettings{});
 #else
-  static const std::vector<cgfs::Figure> figures = Figures();
+    chapter_figures = Figures();
 #endif
-  return figures;
+    figures_made = true;
+  }
+  return chapter_figures;
 }
 
 cgfs::View view;                   // the camera's view, for the figures that have one
@@ -221,5 +233,31 @@ EMSCRIPTEN_KEEPALIVE int PreviewSide(int side) {
 EMSCRIPTEN_KEEPALIVE int SettleMilliseconds() {
   return cgfs::kSettleMilliseconds;
 }
+
+#if __has_include("options.h")
+// The chapter's figures made anew with the options a command line would give, one word
+// to a line ("--model\nspider.obj"; none: the chapter's own figures): files are read
+// from the page's file system, where the page has put the reader's. 0 when the options
+// were read, the figures made and the view reset; 2, with the line that says why on the
+// standard error (where warnings go too, as from the program), when not: the figures
+// stay as they were.
+EMSCRIPTEN_KEEPALIVE int UseOptions(const char* lines) {
+  std::vector<std::string> words;
+  for (std::string_view rest = lines; !rest.empty();) {
+    const std::size_t end = std::min(rest.find('\n'), rest.size());
+    words.emplace_back(rest.substr(0, end));
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+  }
+  ChapterSettings settings;
+  const int status = cgfs::ReadOptions(
+      CGFS_CHAPTER, [&settings](CLI::App& app) { AddChapterOptions(app, settings); }, words);
+  if (status == 0) {
+    chapter_figures = Figures(settings);
+    figures_made = true;
+    view = cgfs::View{};
+  }
+  return status;
+}
+#endif
 
 }  // extern "C"

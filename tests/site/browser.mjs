@@ -1,8 +1,8 @@
 // Headless Chromium, driven through its DevTools protocol, for the site's tests
-// (check_site.mjs, check_your_code.mjs): one page, its pages opened from the site's
-// folder, keys, mouse drags, and what the page evaluates. Every request the browser makes
-// is heard: one that leaves this machine (anything but a file of the site, a Blob, data
-// or 127.0.0.1) is kept in `outside`, for a test to fail on.
+// (check_site.mjs, check_your_code.mjs, check_models.mjs): one page, its pages opened
+// from the site's folder, keys, mouse drags, files chosen, and what the page evaluates.
+// Every request the browser makes is heard: one that leaves this machine (anything but a
+// file of the site, a Blob, data or 127.0.0.1) is kept in `outside`, for a test to fail on.
 import {spawn, execFileSync} from 'node:child_process';
 import {mkdtempSync, rmSync} from 'node:fs';
 import {tmpdir} from 'node:os';
@@ -119,6 +119,13 @@ export class Browser {
     const common = {key, windowsVirtualKeyCode: code, code: named[key] ? key : `Key${key.toUpperCase()}`};
     await this.Send('Input.dispatchKeyEvent', {type: 'keyDown', ...common, text: named[key] ? undefined : key});
     await this.Send('Input.dispatchKeyEvent', {type: 'keyUp', ...common});
+  }
+
+  // Chooses files in the page's file input `selector`, as a reader does in the browser's
+  // file picker (its change event follows).
+  async ChooseFiles(selector, paths) {
+    const {result} = await this.Send('Runtime.evaluate', {expression: `document.querySelector(${JSON.stringify(selector)})`});
+    await this.Send('DOM.setFileInputFiles', {files: paths, objectId: result.objectId});
   }
 
   async Drag(fromX, fromY, right, down) {

@@ -28,6 +28,7 @@ let settle = null;     // the timer that draws the full frame once the camera st
 let wanted = null;     // the frame to draw when the worker is free: 'full' or 'preview'
 let drawing = false;   // a Draw loop is running
 let generation = 0;    // counts the worker's restarts: a loop of an earlier one stops
+let siteModel = '';    // the name of the site's model drawn (models.js), '' when none
 
 function Say(id, text) {
   const element = document.getElementById(id);
@@ -87,7 +88,8 @@ async function Draw(full) {
 // The address: the figure shown, and its view where it has a camera.
 function Address() {
   const figure = figures[shown];
-  const query = new URLSearchParams({ figure: figure.name });
+  const query = new URLSearchParams(siteModel ? { model: siteModel } : {});
+  query.set('figure', figure.name);
   if (figure.hasCamera) query.set('view', view);
   return '?' + query.toString();
 }
@@ -100,15 +102,20 @@ function ShowView() {
   history.replaceState(null, '', Address());
 }
 
-// Shows figure `index`: its button pressed, its caption, then its frame. A figure still
-// being drawn is given up (the worker is ended and made anew: the business card takes
-// seconds).
-function Select(index) {
+// Gives up the frame being drawn, if any: the worker is ended and made anew.
+function StopDrawing() {
   if (figuresWorker.Busy) {
     figuresWorker.Restart();
     ++generation;
     drawing = false;
   }
+}
+
+// Shows figure `index`: its button pressed, its caption, then its frame. A figure still
+// being drawn is given up (the worker is ended and made anew: the business card takes
+// seconds).
+function Select(index) {
+  StopDrawing();
   shown = index;
   figures.forEach((figure, i) => figure.button.setAttribute('aria-checked', i === index));
   figures[index].button.scrollIntoView({ block: 'nearest' });
@@ -241,8 +248,13 @@ async function Opening() {
 }
 
 // The figures, in two lists: the figures, and the views of where the work goes (those
-// another figure's C switches to).
+// another figure's C switches to). Lists there were are replaced, and the view is the
+// chapter's again (a model's figures replace the chapter's, models.js).
 function ListFigures(described) {
+  document.getElementById('figures').replaceChildren();
+  document.getElementById('cost-views').replaceChildren();
+  figures = [];
+  view = '0,0,0,0,0';
   const isCostView = (figure) => figure.costPartner >= 0 && !figure.hasCostView;
   for (const [i, each] of described.entries()) {
     const figure = { ...each };
@@ -278,9 +290,10 @@ async function Start() {
   figuresWorker = new FiguresWorker(live.dataset.module, CGFS_FIGURES_OF[live.dataset.chapter], (fraction) => {
     Say('status', `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
   });
-  const described = await figuresWorker.Request({ op: 'describe' });
+  let described = await figuresWorker.Request({ op: 'describe' });
   if (described.problem) throw new Error(described.problem);
   settleTime = described.settle;
+  if (document.getElementById('model')) described = await ModelsStart() ?? described;
   ListFigures(described.figures);
   document.getElementById('cost').addEventListener('click', () => Select(figures[shown].costPartner));
   document.getElementById('reset').addEventListener('click', () => MoveCamera({ reset: true }));

@@ -14,11 +14,15 @@ class FiguresWorker {
     this.onProgress = onProgress;
     this.next = 1;
     this.pending = new Map();
+    this.configuration = null;  // the options message the figures are made with, if any
     this.Start();
   }
 
   Start() {
     this.worker = new Worker(this.url);
+    // A new worker is given the options its figures were made with before anything else
+    // (its answer, id 0, is no one's).
+    if (this.configuration) this.worker.postMessage({ ...this.configuration, id: 0 });
     this.worker.onmessage = ({ data }) => {
       if ('progress' in data) {
         this.onProgress(data.progress);
@@ -40,6 +44,14 @@ class FiguresWorker {
       this.pending.set(id, resolve);
       this.worker.postMessage({ ...message, id }, transfer);
     });
+  }
+
+  // Sends an options message (figures_worker.js): if its options were read, they are
+  // given again to every worker made after, which starts with the chapter's own.
+  async Configure(message) {
+    const answer = await this.Request(message);
+    if (!answer.problem && !answer.cancelled && answer.status === 0) this.configuration = message;
+    return answer;
   }
 
   // Whether a request is being answered.

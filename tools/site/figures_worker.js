@@ -15,11 +15,21 @@
 //                            a reader's image of the figure compared with ours as
 //                            cgfs-compare compares: verdict, text, difference image and
 //                            first differing pixel (program/web/web_entry.cpp)
+//   options files words      the chapter's figures made anew with the options a command
+//                            line would give (words: --model house.obj), the files they
+//                            name put where the chapter's code reads them; the lines
+//                            the program would print (its warnings, or why not) and
+//                            the figures, as describe gives them
 // A page that wants a draw stopped ends the worker and makes a new one.
 'use strict';
 
 let lastProgress = 0;
+let said = null;  // what the chapter's code prints on its standard error, while heard
 const chapter = self[self.CGFS_MODULE]({
+  printErr(line) {
+    if (said) said.push(line);
+    else console.error(line);
+  },
   // A long figure's progress (the business card's tiles), at most ten times a second.
   onProgress(fraction) {
     const now = performance.now();
@@ -43,6 +53,48 @@ function SetView(module, view) {
 function Pixels(module, bytes) {
   return new Uint8ClampedArray(module.HEAPU8.buffer, module._Pixels(), bytes).slice();
 }
+
+// The largest image the page decodes for the chapter's code: what its readers accept
+// (program/src/image_decoders.h).
+const kMaxPixels = 4096 * 4096;
+
+// A file for the chapter's code: as it is, but a PNG or JPEG image, which the page's
+// build cannot decode (no libpng or libjpeg in it), decoded by the browser and given as
+// a binary PPM, which the chapter's image reader reads (program/web/image_decoders_web.cpp).
+// One larger than the readers accept is given as the header alone, which they refuse
+// by its size as they refuse the file natively; one the browser cannot decode, as it is.
+// Alpha is dropped, as the native readers drop it (the canvas keeps colours multiplied
+// by alpha, so a half-transparent texel may differ from libpng's by one).
+async function ForTheChapter(bytes) {
+  const png = [0x89, 0x50, 0x4e, 0x47], jpeg = [0xff, 0xd8, 0xff];
+  const starts = (magic) => magic.every((byte, i) => bytes[i] === byte);
+  if (!starts(png) && !starts(jpeg)) return bytes;
+  let bitmap;
+  try {
+    bitmap = await createImageBitmap(new Blob([bytes]), { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
+  } catch {
+    return bytes;
+  }
+  const { width, height } = bitmap;
+  const header = new TextEncoder().encode(`P6\n${width} ${height}\n255\n`);
+  if (width * height > kMaxPixels) return header;
+  const canvas = new OffscreenCanvas(width, height);
+  const context = canvas.getContext('2d');
+  context.drawImage(bitmap, 0, 0);
+  const rgba = context.getImageData(0, 0, width, height).data;
+  const ppm = new Uint8Array(header.length + width * height * 3);
+  ppm.set(header);
+  for (let from = 0, to = header.length; from < rgba.length; from += 4, to += 3) {
+    ppm[to] = rgba[from];
+    ppm[to + 1] = rgba[from + 1];
+    ppm[to + 2] = rgba[from + 2];
+  }
+  return ppm;
+}
+
+// The folder the reader's files are put in, the working folder of the chapter's code:
+// its messages name them as a program run in their folder would.
+const kFolder = '/reader';
 
 const operations = {
   describe(module) {
@@ -91,14 +143,43 @@ const operations = {
   },
 };
 
-onmessage = async ({ data }) => {
+operations.options = async (module, { files = [], words = [] }) => {
+  const { FS } = module;
+  if (!FS.analyzePath(kFolder).exists) FS.mkdir(kFolder);
+  for (const name of FS.readdir(kFolder)) {
+    if (name !== '.' && name !== '..') FS.unlink(`${kFolder}/${name}`);
+  }
+  FS.chdir(kFolder);
+  for (const { name, bytes } of files) {
+    if (name === '' || name === '.' || name === '..' || name.includes('/')) {
+      return { problem: `${JSON.stringify(name)} cannot be a file's name here` };
+    }
+    FS.writeFile(`${kFolder}/${name}`, await ForTheChapter(new Uint8Array(bytes)));
+  }
+  said = [];
+  const text = module.allocateUTF8(words.join('\n'));
+  const status = module._UseOptions(text);
+  module._free(text);
+  const lines = said;
+  said = null;
+  return { status, lines, ...operations.describe(module) };
+};
+
+async function Answer(data) {
   const module = await chapter;
   let result;
   try {
-    result = operations[data.op](module, data);
+    result = await operations[data.op](module, data);
   } catch (error) {
     result = { problem: String(error?.message ?? error) };
   }
   const { answer, transfer = [] } = result.answer ? result : { answer: result };
   postMessage({ id: data.id, ...answer }, transfer);
+}
+
+// The requests answered in the order they came, each once the one before is done (the
+// options' images are decoded asynchronously: a draw asked for meanwhile waits for them).
+let answered = Promise.resolve();
+onmessage = ({ data }) => {
+  answered = answered.then(() => Answer(data));
 };

@@ -52,6 +52,20 @@ LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a
 OPENING_FIGURES = {"16-business-card": "business-card-1-sample"}
 
 
+# The models the pages of the chapters that take --model offer (models.js): each a
+# folder, the files of it the model is (its .obj first), and whose it is. The project's
+# own test model is always there; two of the models Debian's assimp-testmodels installs
+# (scripts/setup --deep) when they are on the machine.
+ASSIMP_MODELS = "/usr/share/assimp/models/OBJ"
+SITE_MODELS = {
+    "house": ("tests/models", ["house.obj", "house.mtl", "house-bricks.ppm"],
+              "this project's test model"),
+    "spider": (ASSIMP_MODELS, ["spider.obj", "spider.mtl", "SpiderTex.jpg", "drkwood2.jpg", "engineflare1.jpg",
+                               "wal67ar_small.jpg", "wal69ar_small.jpg"], "assimp's test models"),
+    "WusonOBJ": (ASSIMP_MODELS, ["WusonOBJ.obj"], "assimp's test models"),
+}
+
+
 # The scripts of a chapter page's "Your code" panel, in order.
 YOUR_CODE_SCRIPTS = ["vendor/codemirror/codemirror.js", "vendor/codemirror/javascript.js",
                      "vendor/codemirror/python.js", "vendor/check.js", "vendor/cases.js", "code_runner.js",
@@ -154,6 +168,9 @@ class Site:
                                if re.match(r"\d\d-", p.name) and p.is_dir())
         self.pending = []  # repository paths linked to and not made yet
         self.made = {f"chapters/{chapter}/README.md" for chapter in self.chapters}  # or to be made
+        # The site's models: those whose files are all on this machine.
+        self.models = {name: about for name, (folder, files, about) in SITE_MODELS.items()
+                       if all((self.repo / folder / file).is_file() for file in files)}
 
     # Where a file of the repository is in the site.
     def site_path(self, repo_path):
@@ -256,6 +273,7 @@ class Site:
 <p id="problem" hidden></p>
 <canvas id="canvas" width="600" height="600"></canvas>
 <p><button id="cost" type="button" hidden title="where the work goes, pixel by pixel"></button></p>
+{self.model_picker(chapter)}
 <div id="camera" hidden>
 <p>The view: <code id="view"></code> · <a id="view-link" href="">a link to this view</a>
 · <button id="reset" type="button">back to the chapter's view (R)</button></p>
@@ -293,9 +311,40 @@ byte for byte, as the native program's golden image.</p>
                           f"CGFS_FIGURES_OF[{json.dumps(chapter)}] = {json.dumps((self.web_build / f'{chapter}.js').read_text())};\n")
         has_code = chapter in self.cases
         self.page(site_page, f"{chapter} — {title}", body,
-                  [f"{chapter}/figures-source.js", "vendor/sources.js", "figures_client.js", "chapter.js",
+                  [f"{chapter}/figures-source.js", "vendor/sources.js", "figures_client.js",
+                   *(["models.js"] if self.takes_models(chapter) else []), "chapter.js",
                    *(YOUR_CODE_SCRIPTS if has_code else [])],
                   ["vendor/codemirror/codemirror.css"] if has_code else [])
+
+    def takes_models(self, chapter):
+        """Whether the chapter's program takes --model (its options.cpp declares it)."""
+        options = self.repo / "chapters" / chapter / "options.cpp"
+        return options.is_file() and '"model"' in options.read_text()
+
+    def model_picker(self, chapter):
+        """The picker of models.js, on the page of a chapter that takes --model."""
+        if not self.takes_models(chapter):
+            return ""
+        choices = "".join(f'<option value="{html.escape(name)}">{html.escape(name)} ({html.escape(about)})</option>'
+                          for name, about in self.models.items())
+        return f"""<div id="model">
+<p><label>A model: <select id="model-choice"><option value="">none: the chapter's figures</option>{choices}</select></label>
+· <label>your own: <input type="file" id="model-files" multiple accept=".obj,.mtl,.png,.jpg,.jpeg,.ppm"></label></p>
+<pre id="model-said" hidden></pre>
+<p class="note">A Wavefront OBJ file, chosen with its .mtl and texture files at once (they are
+put in one folder), is read as <code>--model FILE.obj</code> reads it, by the same reader
+compiled with the chapter's code, and drawn by the chapter's code; what the program would
+print (a warning, or the one line that says why not) is shown above. PNG and JPEG textures
+are decoded by the browser, the rest as the program does.</p>
+</div>"""
+
+    def model_scripts(self):
+        """Each site model's files as a script (models/NAME.js; models.js loads it)."""
+        for name in self.models:
+            folder, files, _ = SITE_MODELS[name]
+            encoded = {file: base64.b64encode((self.repo / folder / file).read_bytes()).decode() for file in files}
+            self.folder.write(f"models/{name}.js", "var CGFS_MODELS = self.CGFS_MODELS || {};\n"
+                              f"CGFS_MODELS[{json.dumps(name)}] = {json.dumps({'open': files[0], 'files': encoded})};\n")
 
     def your_code_panel(self, chapter, title):
         """The "Your code" tab (yourcode.js), for a chapter with cases."""
@@ -506,8 +555,10 @@ programs, run the tests and compare your own images with these.</p>
         self.folder.write("vendor/pyodide.js", f"var CGFS_PYODIDE = {json.dumps(assets)};\n")
 
     def build(self):
-        for name in ("chapter.js", "index.js", "figures_client.js", "site.css", "code_runner.js", "yourcode.js"):
+        for name in ("chapter.js", "index.js", "figures_client.js", "models.js", "site.css", "code_runner.js",
+                     "yourcode.js"):
             self.folder.write(name, (SITE_FILES / name).read_bytes())
+        self.model_scripts()
         self.vendor_sources()
         self.vendor_your_code()
         for chapter in self.chapters:
