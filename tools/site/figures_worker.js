@@ -151,7 +151,8 @@ operations.options = async (module, { files = [], words = [] }) => {
   }
   FS.chdir(kFolder);
   for (const { name, bytes } of files) {
-    if (name === '' || name === '.' || name === '..' || name.includes('/')) {
+    // A name is a word of the command line (one to a line) and a file of one folder.
+    if (name === '' || name === '.' || name === '..' || /[/\n]/.test(name)) {
       return { problem: `${JSON.stringify(name)} cannot be a file's name here` };
     }
     FS.writeFile(`${kFolder}/${name}`, await ForTheChapter(new Uint8Array(bytes)));
