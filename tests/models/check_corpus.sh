@@ -7,8 +7,9 @@
 # counts (those without an area left out, and said; for polygons of more than four
 # corners, which the two split differently, as many as its faces make, those
 # tinyobjloader could not make said), or is refused in one line; which are refused, and
-# why, must be the list in docs/testing.md. Two of them are golden
-# images (tests/models/golden/). Usage:
+# why, must be the list in docs/testing.md. Two of them are golden images
+# (tests/models/golden/), and the spider is shown in chapter 14's window, as the README
+# shows it. Usage:
 #   check_corpus.sh REPOSITORY BUILD [CORPUS]   (CORPUS: /usr/share/assimp/models/OBJ)
 set -u
 repo=$1 build=$2 corpus=${3:-/usr/share/assimp/models/OBJ}
@@ -103,6 +104,15 @@ for golden in "14-textures spider model" "05-raytracer-extensions WusonOBJ model
     fail "$1 $2 differs from tests/models/golden/$1-$2.png: $(cat "$work/compare")"
   fi
 done
+
+# The README's command, 14-textures --model .../spider.obj --window, as a person uses it
+# (tests/window/check_window.sh: S, then Right and S, save what the program draws).
+if CGFS_WINDOW_MODEL="$corpus/spider.obj" bash "$repo/tests/window/check_window.sh" \
+  "$build/14-textures" "$repo/tests/golden/14-textures" "$work/window" >"$work/window.log" 2>&1; then
+  grep -E "^(ok: --model|SKIPPED)" "$work/window.log"
+else
+  fail "14-textures --model spider.obj --window: $(grep -E "^FAIL" "$work/window.log" | tr '\n' ' ')"
+fi
 
 echo "$failures failed"
 [ "$failures" -eq 0 ]

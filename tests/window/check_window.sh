@@ -15,6 +15,9 @@
 # CGFS_WINDOW_COST="FIGURE COST_VIEW": also a window opened on FIGURE and its cost view,
 # each elsewhere in the list: C shows the cost view, C again the figure, each saved
 # byte for byte its golden image.
+# CGFS_WINDOW_MODEL=FILE.obj: also a window opened with --model FILE.obj: S and Right S
+# save the model's first two figures, byte for byte what the program draws with
+# --model FILE.obj.
 # CGFS_WINDOW_UNWRITABLE=1 (with a CAMERA_FIGURE): also a window whose output folder is a
 # file: S says in one line why it saved nothing, prints the moved view all the same, and
 # the window stays open.
@@ -225,6 +228,41 @@ if [ -n "${CGFS_WINDOW_COST:-}" ]; then
   wait $program_pid || status=$?
   program_pid=""
   [ $status -eq 0 ] || fail "Esc after C: exit status $status, expected 0"
+  for _ in $(seq 250); do
+    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
+    sleep 0.02
+  done
+fi
+
+if [ -n "${CGFS_WINDOW_MODEL:-}" ]; then
+  model=$CGFS_WINDOW_MODEL
+  "$program" --model "$model" --output "$work/drawn-model" >/dev/null 2>&1 ||
+    fail "--model $model: the program drew nothing"
+  mapfile -t model_figures < <("$program" --model "$model" --list 2>/dev/null | cut -d' ' -f1 | head -2)
+  open_window "$work/model.txt" --model "$model" --output "$work/saved-model"
+  if [ -z "$window" ]; then
+    cat "$work/model.txt"
+    fail "no window for --model${ended:+ (the program ended, exit status $ended)}"
+    exit 1
+  fi
+  xdotool windowfocus --sync "$window"
+  for figure in "${model_figures[@]}"; do
+    xdotool key s
+    for _ in $(seq 3000); do
+      grep -q "^saved .*/$figure.png" "$work/model.txt" && break
+      sleep 0.02
+    done
+    cmp -s "$work/saved-model/$figure.png" "$work/drawn-model/$figure.png" &&
+      echo "ok: --model $(basename "$model"): $figure from the window is what the program draws" ||
+      fail "--model $(basename "$model"): $figure from the window differs from what the program draws (or was not saved)"
+    xdotool key Right
+  done
+  xdotool key Escape
+  status=0
+  wait $program_pid || status=$?
+  program_pid=""
+  [ $status -eq 0 ] || fail "Esc in the model's window: exit status $status, expected 0"
+  cat "$work/model.txt"
   for _ in $(seq 250); do
     [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
     sleep 0.02
