@@ -93,6 +93,17 @@ export class Browser {
     return result.value;
   }
 
+  // The page's canvas as [width, height, SHA-256 of its RGBA pixels], as PngDigest
+  // (png.mjs) gives a PNG file's.
+  async CanvasDigest() {
+    return this.Evaluate(`(async () => {
+      const canvas = document.getElementById('canvas');
+      const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+      const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', pixels));
+      return [canvas.width, canvas.height, Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')];
+    })()`);
+  }
+
   async WaitFor(expression, what, seconds = 60) {
     for (let waited = 0; waited < seconds * 1000; waited += 50) {
       if (await this.Evaluate(expression)) return true;

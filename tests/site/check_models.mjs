@@ -15,32 +15,21 @@
 // Usage: node check_models.mjs REPO SITE NATIVE_BUILD
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync, spawnSync} from 'node:child_process';
-import {createHash} from 'node:crypto';
 import {copyFileSync, existsSync, mkdtempSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
 import {Browser, Fail, Failures} from './browser.mjs';
-import {ReadPng} from './png.mjs';
+import {PngDigest} from './png.mjs';
 
 const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
 const house = join(repo, 'tests', 'models');
 const assimp = '/usr/share/assimp/models/OBJ';
 const work = mkdtempSync(join(tmpdir(), 'cgfs-site-models-'));
 
-const kCanvasDigest = `(async () => {
-  const canvas = document.getElementById('canvas');
-  const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', pixels));
-  return [canvas.width, canvas.height, Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')];
-})()`;
 const kDrawn = "document.getElementById('canvas').dataset.drawn === 'full'";
 const kSaid = "document.getElementById('model-said').hidden ? '' : document.getElementById('model-said').textContent";
 const kFigureNames = "Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)";
 
-function Digest(path) {
-  const image = ReadPng(path);
-  return [image.width, image.height, createHash('sha256').update(image.rgba).digest('hex')];
-}
 const Same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
 
 // The native program's images of the model (in a folder of their own, by figure name),
@@ -64,7 +53,7 @@ async function CompareFigures(browser, chapter, images, what) {
   if (!Same([...names].sort(), expected)) Fail(`${chapter} ${what}: the page lists ${names}, the program draws ${expected}`);
   for (const [index, name] of names.entries()) {
     await ShowFigure(browser, index);
-    if (!Same(await browser.Evaluate(kCanvasDigest), Digest(join(images, `${name}.png`)))) {
+    if (!Same(await browser.CanvasDigest(), PngDigest(join(images, `${name}.png`)))) {
       Fail(`${chapter} ${what}: ${name} differs from the native program's`);
     }
   }
@@ -96,7 +85,7 @@ async function CheckPicker(browser, chapter) {
     document.querySelectorAll('#figure-lists button')[0].click(); })()`);
   await browser.WaitFor(kDrawn, `${chapter}: the model after a restart`);
   const first = (await browser.Evaluate(kFigureNames))[0];
-  if (!Same(await browser.Evaluate(kCanvasDigest), Digest(join(drawnNatively.out, `${first}.png`)))) {
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(drawnNatively.out, `${first}.png`)))) {
     Fail(`${chapter}: the chosen house's ${first} differs from the native program's`);
   }
 
@@ -126,7 +115,7 @@ async function CheckPicker(browser, chapter) {
     select.dispatchEvent(new Event('change')); })()`);
   await browser.WaitFor(`${kDrawn} && ${kOwnFirst}`, `${chapter}: the chapter's figures again`);
   await ShowFigure(browser, 0);
-  if (!Same(await browser.Evaluate(kCanvasDigest), Digest(join(repo, 'tests', 'golden', chapter, `${own}.png`)))) {
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${own}.png`)))) {
     Fail(`${chapter}: back to none, ${own} differs from its golden image`);
   }
   console.log(`${chapter}: the picker's house as the program draws it, after a restart too; ` +
@@ -139,7 +128,7 @@ async function CheckAssimp(browser, chapter, name) {
   await browser.Open(`${chapter}/index.html?model=${name}&figure=model&view=${view}`);
   await browser.WaitFor(kDrawn, `${chapter}: ${name} drawn`, 120);
   const drawnNatively = Native(chapter, join(assimp, `${name}.obj`), ['--figure', 'model', '--view', view]);
-  if (!Same(await browser.Evaluate(kCanvasDigest), Digest(join(drawnNatively.out, 'model.png')))) {
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(drawnNatively.out, 'model.png')))) {
     Fail(`${chapter}: ${name} from ${view} differs from the native program's`);
   } else {
     console.log(`${chapter}: ${name} from ${view}, as the program draws it`);

@@ -19,27 +19,16 @@
 //            [--speed CHAPTER:FIGURE ... | --screenshot PAGE WIDTHxHEIGHT FILE]
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync} from 'node:child_process';
-import {createHash} from 'node:crypto';
 import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, dirname, resolve} from 'node:path';
 import {Browser, Fail, Failures, sleep} from './browser.mjs';
-import {ReadPng} from './png.mjs';
+import {PngDigest} from './png.mjs';
 
 const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
 const speedIndex = process.argv.indexOf('--speed');
 
-const kCanvasDigest = `(async () => {
-  const canvas = document.getElementById('canvas');
-  const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', pixels));
-  return [canvas.width, canvas.height, Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')];
-})()`;
 
-function GoldenDigest(path) {
-  const image = ReadPng(path);
-  return [image.width, image.height, createHash('sha256').update(image.rgba).digest('hex')];
-}
 
 const Same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
 const Chapters = () => readdirSync(join(repo, 'chapters')).filter((name) => /^\d\d-/.test(name)).sort();
@@ -61,7 +50,7 @@ async function CheckEveryFigure(browser) {
       const problem = await browser.Evaluate("document.getElementById('problem').textContent");
       const golden = join(repo, 'tests', 'golden', chapter, `${name}.png`);
       if (problem) Fail(`${chapter}/${name}: the page says "${problem}"`);
-      else if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(golden))) {
+      else if (!Same(await browser.CanvasDigest(), PngDigest(golden))) {
         Fail(`${chapter}/${name}: the canvas differs from ${golden}`);
       }
       ++compared;
@@ -79,14 +68,14 @@ async function CheckCostKey(browser, chapter, figure, costView) {
   await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.body.focus(); })()");
   await browser.Key('c');
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: C`);
-  if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${costView}.png`)))) {
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${costView}.png`)))) {
     Fail(`${chapter}: C on ${figure} did not show ${costView}`);
   }
   const back = await browser.Evaluate("document.getElementById('cost').textContent");
   if (back !== `back to ${figure} (C)`) Fail(`${chapter}: ${costView}'s cost button says '${back}'`);
   await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.getElementById('cost').click(); })()");
   await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the cost button`);
-  if (!Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(repo, 'tests', 'golden', chapter, `${figure}.png`)))) {
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${figure}.png`)))) {
     Fail(`${chapter}: the cost button on ${costView} did not go back to ${figure}`);
   }
   console.log(`${chapter}: C showed ${costView}, its button ${figure} again`);
@@ -117,7 +106,7 @@ async function CheckCamera(browser, chapter, figure) {
   if (view === walked) Fail(`${chapter}: dragging the picture did not turn the camera`);
   const out = mkdtempSync(join(tmpdir(), 'cgfs-view-'));
   execFileSync(join(native, chapter), ['--figure', figure, '--view', view, '--output', out], {stdio: 'ignore'});
-  const same = Same(await browser.Evaluate(kCanvasDigest), GoldenDigest(join(out, `${figure}.png`)));
+  const same = Same(await browser.CanvasDigest(), PngDigest(join(out, `${figure}.png`)));
   rmSync(out, {recursive: true});
   if (!same) Fail(`${chapter}: the page's frame at view ${view} differs from ${chapter} --view ${view}`);
   const link = await browser.Evaluate("document.getElementById('view-link').getAttribute('href')");

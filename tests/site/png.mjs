@@ -1,6 +1,7 @@
 // Reads a PNG file as the project writes them (8 bits, RGB or RGBA, not interlaced)
 // into RGBA bytes, as a canvas's ImageData holds them: enough to compare a page's
 // canvas with a golden image (tests/site/check_site.mjs) without a package.
+import {createHash} from 'node:crypto';
 import {readFileSync, writeFileSync} from 'node:fs';
 import {deflateSync, inflateSync} from 'node:zlib';
 
@@ -10,6 +11,13 @@ function Paeth(left, up, upLeft) {
   const estimate = left + up - upLeft;
   const [toLeft, toUp, toUpLeft] = [left, up, upLeft].map((v) => Math.abs(estimate - v));
   return toLeft <= toUp && toLeft <= toUpLeft ? left : toUp <= toUpLeft ? up : upLeft;
+}
+
+// A PNG file as [width, height, SHA-256 of its RGBA pixels], as Browser.CanvasDigest
+// (browser.mjs) gives a page's canvas.
+export function PngDigest(path) {
+  const image = ReadPng(path);
+  return [image.width, image.height, createHash('sha256').update(image.rgba).digest('hex')];
 }
 
 export function ReadPng(path) {

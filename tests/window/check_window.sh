@@ -127,6 +127,20 @@ open_window() {
     sleep 0.2
   done
 }
+# Esc closes the window, exit status 0 (fails naming WHEN otherwise); then waits until
+# the X server has forgotten the window, a moment after its program ends: until then a
+# search by title would still find it, not the next program's.
+close_window() {  # WHEN
+  xdotool key Escape
+  local status=0
+  wait $program_pid || status=$?
+  program_pid=""
+  [ $status -eq 0 ] || fail "Esc $1: exit status $status, expected 0"
+  for _ in $(seq 250); do
+    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
+    sleep 0.02
+  done
+}
 open_window "$work/window.txt" "${shown[@]/#/--figure=}" --output "$work/saved"
 if [ -z "$window" ]; then
   cat "$work/window.txt"
@@ -186,18 +200,8 @@ if [ -n "$camera" ]; then
     || fail "the title does not show the view"
   import -display "$DISPLAY" -window "$window" "$work/window-moved.png" 2>/dev/null || true
 fi
-xdotool key Escape
-status=0
-wait $program_pid || status=$?
-program_pid=""
-[ $status -eq 0 ] || fail "Esc: exit status $status, expected 0"
+close_window "in the first window"
 cat "$work/window.txt"
-# The X server forgets a window a moment after its program ends: until then a search
-# by title would still find it, not the next program's.
-for _ in $(seq 250); do
-  [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
-  sleep 0.02
-done
 
 if [ -n "${CGFS_WINDOW_COST:-}" ]; then
   read -r figure cost_view <<<"$CGFS_WINDOW_COST"
@@ -223,15 +227,7 @@ if [ -n "${CGFS_WINDOW_COST:-}" ]; then
   saved_view "$cost_view"
   xdotool key c s
   saved_view "$figure"
-  xdotool key Escape
-  status=0
-  wait $program_pid || status=$?
-  program_pid=""
-  [ $status -eq 0 ] || fail "Esc after C: exit status $status, expected 0"
-  for _ in $(seq 250); do
-    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
-    sleep 0.02
-  done
+  close_window "after C"
 fi
 
 if [ -n "${CGFS_WINDOW_MODEL:-}" ]; then
@@ -257,16 +253,8 @@ if [ -n "${CGFS_WINDOW_MODEL:-}" ]; then
       fail "--model $(basename "$model"): $figure from the window differs from what the program draws (or was not saved)"
     xdotool key Right
   done
-  xdotool key Escape
-  status=0
-  wait $program_pid || status=$?
-  program_pid=""
-  [ $status -eq 0 ] || fail "Esc in the model's window: exit status $status, expected 0"
+  close_window "in the model's window"
   cat "$work/model.txt"
-  for _ in $(seq 250); do
-    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
-    sleep 0.02
-  done
 fi
 
 if [ -n "$camera" ] && [ "${CGFS_WINDOW_UNWRITABLE:-}" = 1 ]; then
@@ -288,16 +276,8 @@ if [ -n "$camera" ] && [ "${CGFS_WINDOW_UNWRITABLE:-}" = 1 ]; then
   [ "$(grep -c "^window: not saved: " "$work/unwritable.txt")" -eq 1 ] \
     || fail "S into an unwritable folder: not one line saying why"
   kill -0 $program_pid 2>/dev/null || fail "S into an unwritable folder ended the program"
-  xdotool key Escape
-  status=0
-  wait $program_pid || status=$?
-  program_pid=""
-  [ $status -eq 0 ] || fail "Esc after a failed save: exit status $status, expected 0"
+  close_window "after a failed save"
   [ "$(cat "$work/not-a-folder")" = "a file, not a folder" ] || fail "the file in the way was changed"
-  for _ in $(seq 250); do
-    [ -z "$(xdotool search --name "^$chapter" 2>/dev/null)" ] && break
-    sleep 0.02
-  done
 fi
 
 # With a SLOW_FIGURE (one that takes a good part of a second to draw): closed while it
