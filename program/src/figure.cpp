@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,12 +52,31 @@ int CostPartner(const std::vector<const Figure*>& figures, std::size_t index) {
   return -1;
 }
 
+namespace {
+
+// `value` in the fewest significant digits that read back as the same double, and at
+// least as many as its whole part has, so that -10 is not written -1e+01.
+// (std::to_chars does this, but emscripten's C++ library, for the web pages, lacks it.)
+std::string Shortest(double value) {
+  char digits[32];
+  const double magnitude = std::abs(value);
+  const int whole_digits = magnitude >= 1 ? static_cast<int>(std::log10(magnitude)) + 1 : 1;
+  for (int precision = std::min(whole_digits, 17); precision <= 17; ++precision) {
+    std::snprintf(digits, sizeof digits, "%.*g", precision, value);
+    if (std::strtod(digits, nullptr) == value) {
+      break;
+    }
+  }
+  return digits;
+}
+
+}  // namespace
+
 std::string FormatView(const View& view) {
-  std::ostringstream out;
-  out.precision(17);  // every digit, so that the same view draws the same image
-  out << view.move.x << "," << view.move.y << "," << view.move.z << "," << view.yaw << ","
-      << view.pitch;
-  return out.str();
+  // Every number read back exactly, so that the same view draws the same image, in as
+  // few digits as that takes: 2.2, not 2.2000000000000002.
+  return Shortest(view.move.x) + "," + Shortest(view.move.y) + "," + Shortest(view.move.z) + "," +
+         Shortest(view.yaw) + "," + Shortest(view.pitch);
 }
 
 View ParseView(const std::string& text) {

@@ -1,7 +1,10 @@
 // How keys and the mouse move a camera (program/camera_controls.h).
 #include <catch2/catch.hpp>
 
+#include <string>
+
 #include "program/camera_controls.h"
+#include "program/figure.h"
 
 using cgfs::CameraKey;
 using cgfs::View;
@@ -37,4 +40,20 @@ TEST_CASE("frames drawn while moving are half the size, and even", "[camera]") {
   CHECK(cgfs::PreviewSide(512) == 256);
   CHECK(cgfs::PreviewSide(302) == 150);
   CHECK(cgfs::PreviewSide(2) == 2);
+}
+
+TEST_CASE("a view is written in the fewest digits that read back as the same view", "[camera]") {
+  const auto round_trip = [](const View& view) {
+    const std::string text = cgfs::FormatView(view);
+    INFO(text);
+    CHECK(cgfs::ParseView(text) == view);
+    return text;
+  };
+  CHECK(round_trip(View{{2.2, 0.5, 1.2}, 51, -10}) == "2.2,0.5,1.2,51,-10");
+  CHECK(round_trip(View{{0, 0, 0.5}, 5, 0}) == "0,0,0.5,5,0");
+  CHECK(round_trip(View{{100, 1000, 999.9999999}, 360, 12345.678}) ==
+        "100,1000,999.9999999,360,12345.678");
+  // Where every digit is needed, every digit is written.
+  CHECK(round_trip(View{{0.1 + 0.2, 1e-7, -999999.5}, 0, 0}) ==
+        "0.30000000000000004,1e-07,-999999.5,0,0");
 }
