@@ -14,8 +14,8 @@
 //    equal what the native programs draw.
 // Usage: node check_models.mjs REPO SITE NATIVE_BUILD
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
-import {execFileSync, spawnSync} from 'node:child_process';
-import {copyFileSync, existsSync, mkdtempSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
+import {spawnSync} from 'node:child_process';
+import {copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
 import {Browser, Fail, Failures} from './browser.mjs';
@@ -102,7 +102,7 @@ async function CheckPicker(browser, chapter) {
 
   const alone = join(work, 'alone');
   rmSync(alone, {recursive: true, force: true});
-  execFileSync('mkdir', ['-p', alone]);
+  mkdirSync(alone, {recursive: true});
   copyFileSync(join(house, 'house.obj'), join(alone, 'house.obj'));
   const warned = spawnSync(join(native, chapter), ['--model', 'house.obj', '--figure', 'model', '--output', join(work, 'alone-out')],
                            {cwd: alone, encoding: 'utf8'});
@@ -141,7 +141,7 @@ try {
     .filter((c) => existsSync(join(site, c, 'index.html')) && existsSync(join(repo, 'chapters', c, 'options.cpp')))
     .filter((c) => spawnSync(join(native, c), ['--help'], {encoding: 'utf8'}).stdout.includes('--model'));
   if (chapters.length < 8) Fail(`only ${chapters.length} chapters take --model: ${chapters}`);
-  for (const chapter of process.env.QUICK ? [] : chapters) await CheckSiteHouse(browser, chapter);
+  for (const chapter of chapters) await CheckSiteHouse(browser, chapter);
   await CheckPicker(browser, '14-textures');
   await CheckPicker(browser, '05-raytracer-extensions');
   if (existsSync(join(assimp, 'spider.obj'))) {

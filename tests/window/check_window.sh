@@ -235,6 +235,7 @@ if [ -n "${CGFS_WINDOW_MODEL:-}" ]; then
   "$program" --model "$model" --output "$work/drawn-model" >/dev/null 2>&1 ||
     fail "--model $model: the program drew nothing"
   mapfile -t model_figures < <("$program" --model "$model" --list 2>/dev/null | cut -d' ' -f1 | head -2)
+  [ ${#model_figures[@]} -eq 2 ] || fail "--model $model: --list names ${#model_figures[@]} figures, not 2"
   open_window "$work/model.txt" --model "$model" --output "$work/saved-model"
   if [ -z "$window" ]; then
     cat "$work/model.txt"
@@ -250,7 +251,8 @@ if [ -n "${CGFS_WINDOW_MODEL:-}" ]; then
     done
     cmp -s "$work/saved-model/$figure.png" "$work/drawn-model/$figure.png" &&
       echo "ok: --model $(basename "$model"): $figure from the window is what the program draws" ||
-      fail "--model $(basename "$model"): $figure from the window differs from what the program draws (or was not saved)"
+      fail "--model $(basename "$model"): $figure from the window differs from what the" \
+        "program draws (or was not saved)"
     xdotool key Right
   done
   close_window "in the model's window"
