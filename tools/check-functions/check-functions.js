@@ -76,6 +76,11 @@ function parse(argv) {
     if (!stat.isFile()) throw new Usage(`${file}: not a file`);
   }
   if (options.module) options.language = languageOf(options.module);
+  // Real paths from here on: what is bound into the sandbox, hidden or compared is the
+  // file itself, however it was reached (a symbolic link in the path, a relative name).
+  options.shownModule = options.module;
+  if (options.module) options.module = sandbox.real(options.module);
+  if (options.adapter) options.adapter = sandbox.real(options.adapter);
   if (options.adapter && languageOf(options.adapter) !== options.language) {
     throw new Usage(`${options.adapter}: an adapter is in your chapter's language (${options.language})`);
   }
@@ -103,8 +108,9 @@ function command(options, seconds) {
       path.join(__dirname, "runners", "js_runner.mjs")], env: { NODE_PATH: nodePath() } };
   }
   if (sandbox.why()) return run;
-  const folders = [...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(path.resolve(file))))];
-  return sandbox.sandboxed(run, { language: options.language, folders, seconds });
+  const folders = [...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(file)))];
+  const modulePaths = options.language === "python" ? [] : run.env.NODE_PATH.split(path.delimiter);
+  return sandbox.sandboxed(run, { language: options.language, folders, seconds, modulePaths });
 }
 
 // The student's code in a process of its own, spoken to through two pipes (its file
@@ -119,12 +125,18 @@ class ProcessRunner {
   }
 
   start() {
-    const { file, args, env } = command(this.options, this.bound / 1000 + this.options.loadLimit);
+    const { file, args, env, argsText, cut } = command(this.options, this.bound / 1000 + this.options.loadLimit);
+    this.searchCut ||= Boolean(cut);
+    // In the sandbox, an empty environment and bwrap's arguments through a pipe (fd 5).
     const child = spawn(file, args, {
-      cwd: path.dirname(path.resolve(this.options.module)), detached: true,
-      stdio: ["ignore", "ignore", "ignore", "pipe", "pipe"],
-      env: { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env },
+      cwd: path.dirname(this.options.module), detached: true,
+      stdio: ["ignore", "ignore", "ignore", "pipe", "pipe", ...(argsText === undefined ? [] : ["pipe"])],
+      env: argsText === undefined ? { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env } : env,
     });
+    if (argsText !== undefined) {
+      child.stdio[5].on("error", () => {});
+      child.stdio[5].end(argsText);
+    }
     this.process = { child, buffer: "", lines: [], waiting: null, ended: null };
     const state = this.process;
     const wake = () => { const w = state.waiting; state.waiting = null; if (w) w(); };
@@ -189,23 +201,23 @@ class ProcessRunner {
   }
 
   async load(functions, names) {
-    this.loadRequest = { load: { module: path.resolve(this.options.module), adapter: this.options.adapter && path.resolve(this.options.adapter), functions, names } };
+    this.loadRequest = { load: { module: this.options.module, adapter: this.options.adapter, functions, names } };
     this.start();
     this.send(this.loadRequest);
     const message = await this.next(this.options.loadLimit);
     const { CheckError } = await import("./core/report.mjs");
     const fail = (text) => { this.stop(); throw new CheckError(text); };
-    if (message.timeout) fail(`your module ${this.options.module} does not load: still running after ${this.options.loadLimit} s`);
-    if (message.ended) fail(`your module ${this.options.module} does not load: it ended the process (exit ${message.ended}) while loading`);
+    if (message.timeout) fail(`your module ${this.options.shownModule} does not load: still running after ${this.options.loadLimit} s`);
+    if (message.ended) fail(`your module ${this.options.shownModule} does not load: it ended the process (exit ${message.ended}) while loading`);
     if (typeof message.load_error === "string") fail(message.load_error.split("\n")[0].slice(0, 500));
     const facts = message.loaded;
     if (!facts || typeof facts !== "object" || !facts.functions || typeof facts.functions !== "object" ||
         !Array.isArray(facts.defined)) {
-      fail(`your module ${this.options.module} does not load: it said something else while loading`);
+      fail(`your module ${this.options.shownModule} does not load: it said something else while loading`);
     }
     // The process's account of the file, held against what the file says of itself.
     const { heldAgainstFile } = await import("./core/account.mjs");
-    const defined = await definedFunctions(path.resolve(this.options.module), this.language, {
+    const defined = await definedFunctions(this.options.module, this.language, {
       python: sandbox.pythonInterpreter()?.executable, nodePath: this.language === "python" ? "" : nodePath() });
     return heldAgainstFile(facts, defined, functions);
   }
@@ -282,6 +294,9 @@ async function main(argv) {
     }
     const { lines, failed } = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter) });
     const unsandboxed = sandbox.why();
+    if (runner.searchCut) {
+      lines.unshift("note: your folders hold more than 200 000 entries: the search for copies of the case files stopped there (docs/students.md, \"Where your code runs\")");
+    }
     if (unsandboxed) {
       lines.unshift(`note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`);
     }
