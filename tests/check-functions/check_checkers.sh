@@ -294,8 +294,16 @@ run 02 "$styles/vectors.js" --adapter "$styles/vectors-adapter.js"
 check "with it, IntersectRaySphere passes" says "^  IntersectRaySphere +passed \(5 cases\)"
 printf 'const canvasWidth = 600, canvasHeight = 600, size = 1, distance = 1;\nexport function CanvasToViewport(x, y) {\n  return [x * size / canvasWidth, y * size / canvasHeight, distance];\n}\n' >"$styles/module.mjs"
 run 02 "$styles/module.mjs"
-check "an ES module's own names are named, and that only a function it exports can set them" \
-  says "reads your \`canvasHeight\`, \`canvasWidth\`, \`distance\` and \`size\`.*through a function your ES module exports"
+check "an ES module's own names are named, as a script's are, with the adapter that sets them" \
+  says "reads your \`canvasHeight\`, \`canvasWidth\`, \`distance\` and \`size\`.*give an adapter that sets yours \(\`--adapter-template 02 module.mjs\`"
+# The book's names in an ES module, declared and exported, with a main guard that must
+# stay shut: the case's canvas and viewport reach them (Node.js 20.6 and newer).
+printf 'import { fileURLToPath } from "node:url";\nexport let Cw = 600, Ch = 600;\nconst Vw = 1, Vh = 1, d = 1;\nexport function CanvasToViewport(x, y) {\n  return [x * Vw / Cw, y * Vh / Ch, d];\n}\nif (process.argv[1] === fileURLToPath(import.meta.url)) throw new Error("main ran");\n' >"$styles/book-module.mjs"
+run 02 "$styles/book-module.mjs"
+if node -e 'process.exit(typeof require("module").register === "function" ? 0 : 1)'; then
+  check "an ES module's own Cw, Vw and d (let and const) are set for each case, its main guard shut" \
+    says "^  CanvasToViewport +passed \(5 cases\)"
+fi
 printf 'require("fs").writeFileSync("out.ppm", "P3");\nfunction CanvasToViewport(x, y) { return [0, 0, 1]; }\n' >"$styles/writes.js"
 run 02 "$styles/writes.js"
 check "a script that writes a file as it loads is told where that belongs, in one line" one_line

@@ -19,7 +19,9 @@ export const NAMES = {
   depth_buffer: { path: "depth_buffer", kind: "depth_buffer", part: "depth buffer", dialect: "book" },
   PutPixel: { path: "canvas.PutPixel", kind: "PutPixel", part: "PutPixel", dialect: "book" },
   // The demos' (demos/raytracer-0N.html, demos/raster-NN.html in the book's repository).
-  canvas: { path: "canvas", kind: "canvas", part: "canvas", dialect: "demos" },
+  // The book's canvas.PutPixel(x, y, color) and the demos' canvas.width: a canvas object
+  // of the chapter's gets the case's size and the checker's PutPixel.
+  canvas: { path: "canvas", kind: "canvas", part: "canvas", parts: ["canvas", "PutPixel"], dialect: "demos" },
   viewport_size: { path: "viewport.width", part: "viewport", dialect: "demos", square: true },
   projection_plane_z: { path: "viewport.d", part: "viewport", dialect: "demos" },
   spheres: { path: "scene.spheres", kind: "spheres", part: "spheres", dialect: "demos" },
@@ -64,7 +66,7 @@ export function partsGiven(given = {}) {
 // Which parts a name brings.
 export function partsOf(name) {
   const part = NAMES[name]?.part;
-  return part ? COVERS[part] ?? [part] : [];
+  return NAMES[name]?.parts ?? (part ? COVERS[part] ?? [part] : []);
 }
 
 // The table's names that bring a part, book's first.

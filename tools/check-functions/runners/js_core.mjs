@@ -110,13 +110,31 @@ export function declaredFunctions(program) {
 // stay), so that the checker can set them before each case.
 export function constsMadeLet(program, code) {
   let result = code;
-  for (const node of program.body) {
+  for (let node of program.body) {
+    if (node.type === "ExportNamedDeclaration" && node.declaration) node = node.declaration;
     if (node.type === "VariableDeclaration" && node.kind === "const") {
       result = result.slice(0, node.start) + "let  " + result.slice(node.start + 5);
     }
   }
   return result;
 }
+
+// An ES module's source made settable from outside, as a script's is: its `const`s made
+// `let`, and two functions appended that read and set its top-level variables by name.
+export function moduleMadeSettable(program, code) {
+  const names = [];
+  for (let node of program.body) {
+    if (node.type === "ExportNamedDeclaration" && node.declaration) node = node.declaration;
+    if (node.type !== "VariableDeclaration") continue;
+    for (const each of node.declarations) if (each.id.type === "Identifier") names.push(each.id.name);
+  }
+  const cases = (body) => names.map((name) => `case ${JSON.stringify(name)}: ${body(name)}`).join(" ");
+  return `${constsMadeLet(program, code)}
+;export function ${SETTER}(name, value) { switch (name) { ${cases((name) => `${name} = value; return true;`)} } return false; }
+export function ${GETTER}(name) { switch (name) { ${cases((name) => `return ${name};`)} } return undefined; }
+`;
+}
+export const SETTER = "__cgfsSet", GETTER = "__cgfsGet";
 
 export const parse = (code, sourceType) => acorn.parse(code, { ecmaVersion: "latest", sourceType, allowHashBang: true });
 
@@ -142,6 +160,7 @@ export class ChapterBase {
         return undefined;  // a \`let\` read before its line ran
       }
     }
+    if (this.settable?.has(name)) return this.settable.get(name);
     return name in this.exports ? this.exports[name] : globalThis[name];
   }
 
@@ -149,7 +168,7 @@ export class ChapterBase {
     globalThis.__cgfsValue = value;
     try {
       if (this.kind === "script") this.evaluate(`${name} = globalThis.__cgfsValue`);
-      else globalThis[name] = value;
+      else if (!this.settable?.set(name, value)) globalThis[name] = value;
     } finally {
       delete globalThis.__cgfsValue;
     }
@@ -158,7 +177,7 @@ export class ChapterBase {
   // What a student's adapter gets as the chapter: an ES module's exports; for a script,
   // its exports and top-level names, module.Cw = 600 setting its Cw.
   asModule() {
-    if (this.kind === "module") return this.exports;
+    if (this.kind === "module" && !this.settable) return this.exports;
     return new Proxy({}, {
       get: (_, name) => (typeof name !== "string" ? undefined : name in this.exports ? this.exports[name] : this.value(name)),
       has: (_, name) => typeof name === "string" && (name in this.exports || this.value(name) !== undefined),
@@ -275,7 +294,7 @@ export function factsOf(chapter, wanted, names) {
     }
   }
   return { functions, data, defined: [...chapter.declared.keys(), ...Object.keys(chapter.exports)],
-    reachable: chapter.kind === "script" ? "all" : "exports", classes };
+    reachable: chapter.kind === "script" || chapter.settable ? "all" : "exports", classes };
 }
 
 // ---- Building a case's data -----------------------------------------------------------
@@ -327,14 +346,23 @@ export function helpers(chapter) {
   };
 }
 
+// An array whose items are also read and written by name (v[0] and v.x), as the book
+// writes a vertex's v.x and the demos index theirs; the names are not its own keys, so
+// it reads, spreads and prints as the array it is.
+function named(array, names) {
+  names.forEach((name, i) => Object.defineProperty(array, name, {
+    get() { return this[i]; }, set(value) { this[i] = value; }, enumerable: false, configurable: true }));
+  return array;
+}
+
 // How the book's data reach the chapter, unless its adapter says otherwise: vectors and
 // colours as arrays (or the chapter's Vec and Color), spheres, lights and scenes as plain
 // objects with the book's fields (or the demos', for a chapter in their style).
 export function defaultAdapter(made) {
   return {
-    vector: (value) => made.vector(...numbers(value)) ?? numbers(value),
+    vector: (value) => made.vector(...numbers(value)) ?? named(numbers(value), ["x", "y", "z"]),
     point: ([x, y, h = 1]) => made.point(number(x), number(y), number(h)) ?? { x: number(x), y: number(y), h: number(h) },
-    color: (value) => made.color(...numbers(value)) ?? numbers(value),
+    color: (value) => made.color(...numbers(value)) ?? named(numbers(value), ["r", "g", "b"]),
     matrix: (rows) => made.matrix(rows.map(numbers)) ?? rows.map(numbers),
     rows: (rows) => rows.map(numbers),
     vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
@@ -394,9 +422,13 @@ function place(chapter, names, given, adapter, readNames) {
     if (spec.dialect !== "book" && !chapter.declared.has(name) && !readNames.has(name)) continue;
     const kind = spec.kind ?? "number";
     if (kind === "canvas") {
+      // The demos' canvas.width, and the book's canvas.PutPixel(x, y, color) in a drawing case.
+      const fields = { width: value.width, height: value.height, ...(value.PutPixel ? { PutPixel: value.PutPixel } : {}) };
       const canvas = chapter.value("canvas");
-      if (canvas && typeof canvas === "object") Object.assign(canvas, { width: value.width, height: value.height });
-      else chapter.assign(name, { width: value.width, height: value.height });
+      if (canvas && typeof canvas === "object") Object.assign(canvas, fields);
+      else chapter.assign(name, fields);
+    } else if (kind === "scene" && Array.isArray(chapter.value(name))) {
+      chapter.assign(name, adapter.spheres(value.spheres ?? [], adapter));  // a scene kept as the list of its spheres
     } else {
       chapter.assign(name, kind === "number" ? number(value) : kind === "PutPixel" ? value
         : kind === "depth_buffer" ? adapter.depth_buffer(given.canvas, adapter) : adapter[kind](value, adapter));

@@ -21,8 +21,8 @@ import path from "node:path";
 import readline from "node:readline";
 import { pathToFileURL } from "node:url";
 import vm from "node:vm";
-import { ChapterBase, LoadError, MAX_ANSWER, constsMadeLet, declarations, defaultAdapter, factsOf, helpers,
-  oneLine, parse, runCase, syntaxError, useParser } from "./js_core.mjs";
+import { ChapterBase, GETTER, LoadError, MAX_ANSWER, SETTER, constsMadeLet, declarations, defaultAdapter, factsOf,
+  helpers, moduleMadeSettable, oneLine, parse, runCase, syntaxError, useParser } from "./js_core.mjs";
 import { pageScripts } from "./js_page.mjs";
 import { installPage } from "./page_stand_in.mjs";
 
@@ -61,7 +61,17 @@ class Chapter extends ChapterBase {
       } catch (error) {
         throw syntaxError(error, this.file, 0);
       }
-      const loaded = await import(pathToFileURL(this.file).href);
+      // Through the module hook where Node.js has one (20.6 and newer): its top-level
+      // variables settable; else as it is, its own names out of reach.
+      const url = pathToFileURL(this.file).href;
+      if (typeof Module.register === "function") {
+        Module.register("./module_hook.mjs", import.meta.url,
+          { data: { url, source: moduleMadeSettable(parse(source, "module"), source) } });
+      }
+      const { [SETTER]: set, [GETTER]: get, ...loaded } = await import(url);
+      if (set && get) {
+        this.settable = { has: (name) => this.declared.get(name)?.kind === "data", get, set };
+      }
       this.exports = loaded.default && typeof loaded.default === "object" ? { ...loaded.default, ...loaded } : loaded;
       return;
     }
@@ -117,14 +127,18 @@ async function main() {
   const requests = lines[Symbol.asyncIterator]();
   const { load } = JSON.parse((await requests.next()).value);
   const chapter = new Chapter(load.module);
-  process.argv = [process.argv[0], load.module];  // as if run alone: nothing of the checker's
+  // As if imported by another program, with no arguments and nothing of the checker's:
+  // an ES module's main guard (process.argv[1] === fileURLToPath(import.meta.url)) and a
+  // CommonJS one (require.main === module) both stay shut.
+  process.argv = [process.argv[0], "check-functions"];
   let facts, adapter;
   try {
     try {
       await chapter.load();
     } catch (error) {
       const writes = ["EROFS", "EACCES", "EPERM"].includes(error?.code)
-        ? ": it writes a file as it loads, which it may not here; keep that under if (require.main === module)" : "";
+        ? ": it writes a file as it loads, which it may not here; keep that under if (require.main === module) " +
+          "(CommonJS) or if (process.argv[1] === fileURLToPath(import.meta.url)) (an ES module)" : "";
       throw error instanceof LoadError ? error : new LoadError(oneLine(error, [RUNNER_DIR]) + writes);
     }
     const own = load.adapter ? await loadAdapter(load.adapter, chapter).catch((error) => {

@@ -255,10 +255,24 @@ def load(path, name):
         raise LoadError(f"{name} {path} does not load: not a Python file")
     module = importlib.util.module_from_spec(spec)
     sys.path.insert(0, str(path.resolve().parent))
+    # In sys.modules before it runs, as an import puts it: a dataclass under
+    # `from __future__ import annotations` looks its module up there as it is made.
+    previous = sys.modules.get(spec.name)
+    sys.modules[spec.name] = module
     try:
         spec.loader.exec_module(module)
     except BaseException as error:  # whatever their file does, one line
+        if previous is None:
+            sys.modules.pop(spec.name, None)
+        else:
+            sys.modules[spec.name] = previous
         hint = ""
+        if isinstance(error, ModuleNotFoundError) and error.name:
+            version = ".".join(map(str, sys.version_info[:3]))
+            package = error.name.split(".")[0]
+            hint = (f": neither your folder nor the Python that ran it, {sys.executable} ({version}), has "
+                    f"'{package}'; install it for that Python ({sys.executable} -m pip install {package}, or your "
+                    "system's package), or put the python3 that has it first on your PATH")
         if isinstance(error, OSError) and error.errno in (errno.EROFS, errno.EACCES, errno.EPERM):
             hint = ": it writes a file as it loads, which it may not here; keep that under if __name__ == \"__main__\":"
         raise LoadError(f"{name} {path} does not load: {one_line(error)}{hint}") from None
@@ -486,6 +500,9 @@ class Chapter:
             for module in targets:
                 if spec.get("kind") == "canvas":  # the demos' canvas: its size, set in place
                     set_size(module, name, value)
+                elif spec.get("kind") == "scene" and isinstance(getattr(module, name, None), (list, tuple)):
+                    # a scene kept as the list of its spheres: the case's spheres
+                    setattr(module, name, self.built("spheres", value.get("spheres", []), given))
                 else:
                     setattr(module, name, self.built(spec.get("kind", "number"), value, given))
             if targets:
@@ -530,10 +547,11 @@ class Chapter:
 
 
 def set_size(module, name, canvas):
-    """A canvas's width and height set on the object a module holds (attributes or keys),
-    or a record of them where it holds none."""
+    """A canvas's width and height, and in a drawing case the checker's PutPixel (the
+    book's canvas.PutPixel(x, y, color)), set on the object a module holds (attributes
+    or keys), or a record of them where it holds none."""
     held = getattr(module, name, None)
-    size = {"width": canvas["width"], "height": canvas["height"]}
+    size = {key: canvas[key] for key in ("width", "height", "PutPixel") if key in canvas}
     if isinstance(held, dict):
         held.update(size)
     elif held is not None and hasattr(held, "__dict__"):
@@ -662,15 +680,40 @@ def field(value, name):
     return getattr(value, name) if hasattr(value, name) else value[name]
 
 
+def own_maker(make, book, fields):
+    """The book's values (x, y, z) or (r, g, b) made by the chapter's own class, where
+    what it makes holds them (as fields of those names, or by index); else the book's."""
+    def holds(made, values):
+        try:
+            return all(field(made, name) == value for name, value in zip(fields, values))
+        except Exception:
+            try:
+                return list(made)[:3] == list(values)
+            except Exception:
+                return False
+
+    def maker(value):
+        values = numbers(value)
+        return made_by(make, list(values), lambda made: holds(made, values)) or book(value)
+    return maker
+
+
 def in_chapter_style(adapter, main):
-    """The adapter's vectors and colours as numpy arrays where the chapter uses numpy, and
-    its spheres made by the chapter's own Sphere where it has one that takes (center,
-    radius, color, specular, reflective) and keeps them."""
+    """The adapter's vectors and colours as numpy arrays where the chapter uses numpy, or
+    made by the chapter's own class (Vec, Vec3, Vector, Vector3, Vertex; Color) where it
+    has one that takes (x, y, z) or (r, g, b) and keeps them; its spheres made by the
+    chapter's own Sphere where it has one that takes (center, radius, color, specular,
+    reflective) and keeps them."""
     numpy = next((v for v in vars(main).values()
                   if isinstance(v, types.ModuleType) and v.__name__ == "numpy"), None)
     if numpy is not None:
         adapter.vector = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
         adapter.color = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
+    for kind, names, fields in (("vector", ("Vec", "Vec3", "Vector", "Vector3", "Vertex"), "xyz"),
+                                ("color", ("Color", "Colour", "RGB"), "rgb")):
+        make = next((getattr(main, name) for name in names if isinstance(getattr(main, name, None), type)), None)
+        if make is not None and numpy is None:
+            setattr(adapter, kind, staticmethod(own_maker(make, getattr(adapter, kind), fields)))
     own = getattr(main, "Sphere", None)
     if isinstance(own, type):
         book = adapter.sphere
