@@ -43,11 +43,14 @@ function ReferenceOf(chapter, language) {
 }
 
 // What the command line's checker says of a file: its report, without the line that
-// says whether it had a sandbox.
+// says whether it had a sandbox and the lines under a failed case that only a command
+// line has (what the code printed, the command that runs the case alone, the call to
+// paste into a REPL).
 function CliReport(chapter, file) {
   const run = spawnSync('node', [join(repo, 'tools', 'check-functions', 'check-functions.js'), chapter.slice(0, 2), file],
       {encoding: 'utf8'});
-  return run.stdout.split('\n').filter((line) => line && !line.startsWith('note: ')).join('\n');
+  const commandLineOnly = /^( {6}(your code printed:|\| |alone: |in (python3|node), in your file's folder:)| {8})/;
+  return run.stdout.split('\n').filter((line) => line && !line.startsWith('note: ') && !commandLineOnly.test(line)).join('\n');
 }
 
 // ---- The panel, driven as a reader drives it -------------------------------------------

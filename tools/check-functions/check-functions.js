@@ -3,7 +3,8 @@
 // JavaScript, one book function at a time, against the cases our C++ tests run
 // (tests/cases/NN-name.json):
 //
-//     node tools/check-functions/check-functions.js CHAPTER YOUR_FILE [--adapter FILE] [--time-limit S]
+//     node tools/check-functions/check-functions.js CHAPTER YOUR_FILE [--function NAME [--case N]]
+//         [--json FILE] [--adapter FILE] [--time-limit S]
 //     node tools/check-functions/check-functions.js --adapter-template [CHAPTER YOUR_FILE | python | js]
 //
 // YOUR_FILE is a Python module (.py), or JavaScript: a plain script, a CommonJS or ES
@@ -11,8 +12,10 @@
 // book's demo pages are. Your code runs in a process of its own (runners/), which is sent
 // each case's inputs and answers with what your function returned; the verdict, against
 // the expected values it never sees, is made here (core/). docs/students.md says more.
-// Exit status: 0 every case passed, 1 a case failed or your file cannot be checked, 2 a
-// wrong command line.
+// Exit status: 0 the chapter is complete (every case of every function passed), 1 it is
+// incomplete (a case failed) or your file cannot be checked, 2 a wrong command line, 3 it
+// is partial (every case that ran passed, but a function is not written yet or some cases
+// could not run).
 "use strict";
 
 const { spawn } = require("child_process");
@@ -27,8 +30,9 @@ const CASES_DIR = path.join(ROOT, "tests", "cases");
 const GRACE = 2;  // seconds past a case's limit before its process is ended from outside
 const MAX_LINE = 5 << 20;  // characters of one answer
 
-const USAGE = "usage: check-functions.js CHAPTER YOUR_FILE [--adapter FILE] [--time-limit SECONDS]\n" +
+const USAGE = "usage: check-functions.js CHAPTER YOUR_FILE [--function NAME [--case N]] [--json FILE] [--adapter FILE] [--time-limit SECONDS]\n" +
   "       check-functions.js --adapter-template [CHAPTER YOUR_FILE | python | js]";
+const EXIT = { complete: 0, incomplete: 1, partial: 3 };
 
 class Usage extends Error {}
 
@@ -48,6 +52,9 @@ function parse(argv) {
   for (let i = 0; i < argv.length; ++i) {
     if (argv[i] === "--adapter") options.adapter = value(++i);
     else if (argv[i] === "--time-limit") options.timeLimit = Number(value(++i));
+    else if (argv[i] === "--function") options.function = value(++i);
+    else if (argv[i] === "--case") options.case = value(++i);
+    else if (argv[i] === "--json") options.json = argv[++i] === "-" ? "-" : value(i);
     else if (argv[i] === "--adapter-template") options.template = true;
     else if (argv[i] === "--help" || argv[i] === "-h") options.help = true;
     else if (argv[i].startsWith("-") && argv[i] !== "-") throw new Usage(`unknown option ${argv[i]} (${USAGE.split("\n")[0]})`);
@@ -65,6 +72,32 @@ function parse(argv) {
   }
   [options.chapter, options.module] = positional;
   if (options.timeLimit !== undefined && !(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
+  if (options.case !== undefined && options.function === undefined) throw new Usage("--case needs --function NAME: the function whose case it is");
+  if (options.case !== undefined && !/^([0-9]{2}:)?[1-9][0-9]{0,3}$/.test(options.case)) {
+    throw new Usage(`--case ${options.case}: give a case's number (4), or an earlier chapter's and its number (02:4)`);
+  }
+  if (options.function !== undefined && !/^[A-Za-z_][A-Za-z0-9_]{0,63}$/.test(options.function)) throw new Usage(`--function ${options.function}: give a book function's name`);
+  if (options.json !== undefined && options.json !== "-") {
+    const target = path.resolve(options.json);
+    let stat = null;
+    try {
+      stat = fs.statSync(target);
+    } catch {
+      if (!fs.existsSync(path.dirname(target))) throw new Usage(`--json ${options.json}: no folder ${path.dirname(target)}`);
+    }
+    if (stat && !stat.isFile()) throw new Usage(`--json ${options.json}: not a file`);
+    const same = (file) => {
+      try {
+        const other = fs.statSync(file);
+        return stat && other.dev === stat.dev && other.ino === stat.ino;
+      } catch {
+        return false;
+      }
+    };
+    if ([options.module, options.adapter].filter(Boolean).some(same) || /\.(py|js|cjs|mjs|html?)$/i.test(target)) {
+      throw new Usage(`--json ${options.json}: that is code, not a results file; give another name (results.json)`);
+    }
+  }
   for (const file of [options.module, options.adapter]) {
     if (file === undefined) continue;
     let stat;
@@ -252,6 +285,31 @@ class ProcessRunner {
   }
 }
 
+// A word of a command as a shell reads it back; a path in the home folder as ~/...
+function shellWord(word) {
+  const quoted = (text) => (/^[\w./:=+-]*$/.test(text) ? text : `'${text.replace(/'/g, "'\\''")}'`);
+  const home = process.env.HOME;
+  if (home && home !== "/" && path.isAbsolute(word) && word.startsWith(`${home}/`)) return `~/${quoted(word.slice(home.length + 1))}`;
+  return quoted(word);
+}
+
+// The results file, written whole or not at all: into a new file beside it, then renamed
+// over it; standard output for "-".
+function writeResults(target, text) {
+  if (target === "-") {
+    process.stdout.write(text);
+    return;
+  }
+  const temporary = path.join(path.dirname(path.resolve(target)), `.${path.basename(target)}.${process.pid}.tmp`);
+  try {
+    fs.writeFileSync(temporary, text, { flag: "wx", mode: 0o644 });
+    fs.renameSync(temporary, target);
+  } catch (error) {
+    fs.rmSync(temporary, { force: true });
+    throw new Usage(`--json ${target}: cannot write it (${error.code ?? error.message})`);
+  }
+}
+
 function caseFiles() {
   const files = {};
   for (const name of fs.readdirSync(CASES_DIR).filter((each) => each.endsWith(".json")).sort()) {
@@ -280,6 +338,11 @@ async function main(argv) {
   if (!chapter) {
     throw new Usage(`no chapter '${options.chapter}': give a number such as 02 or a folder name; there are cases for ${Object.keys(files).join(", ")}`);
   }
+  if (options.function !== undefined) {
+    const { functionsOf } = await import("./core/plan.mjs");
+    const known = functionsOf(sections(chapter, files));
+    if (!known.includes(options.function)) throw new Usage(`--function ${options.function}: ${chapter} checks ${known.join(", ")}`);
+  }
   const totalCases = sections(chapter, files).flatMap((s) => s.entries).reduce((n, e) => n + e.cases.length, 0);
   const runner = new ProcessRunner(options, totalCases);
   runner.stopped = stoppedLine;
@@ -292,7 +355,29 @@ async function main(argv) {
       process.stdout.write(adapterTemplate(options.language, facts, path.basename(options.module)));
       return 0;
     }
-    const { lines, failed } = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter) });
+    const started = Date.now();
+    const rerun = (name, caseFile, number) => {
+      const which = caseFile.startsWith(chapter) ? `${number}` : `${caseFile.slice(0, 2)}:${number}`;
+      const relative = path.relative(process.cwd(), process.argv[1]);
+      const checker = relative.startsWith("..") || path.isAbsolute(relative) ? process.argv[1] : relative;
+      return `node ${shellWord(checker)} ${chapter.slice(0, 2)} ${shellWord(options.shownModule)}` +
+        `${options.adapter ? ` --adapter ${shellWord(options.adapter)}` : ""} --function ${name} --case ${which}`;
+    };
+    const only = options.function ? { function: options.function, case: options.case } : null;
+    let result;
+    try {
+      result = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter), only, rerun, repl: true });
+    } catch (error) {
+      // A file that cannot be checked is a result too: no case ran, the one line is its output.
+      if (options.json !== undefined && error?.constructor?.name === "CheckError") {
+        const { gradescopeResults } = await import("./core/results.mjs");
+        writeResults(options.json, `${JSON.stringify(gradescopeResults({ records: [], verdict: "incomplete" }, {
+          chapter, file: path.basename(options.module), language: options.language, seconds: (Date.now() - started) / 1000,
+          report: `check-functions.js: ${error.message}`, notes: [] }), null, 2)}\n`);
+      }
+      throw error;
+    }
+    const { lines } = result;
     const unsandboxed = sandbox.why();
     if (runner.searchCut) {
       lines.unshift("note: your folders hold more than 200 000 entries: the search for copies of the case files stopped there (docs/students.md, \"Where your code runs\")");
@@ -300,8 +385,14 @@ async function main(argv) {
     if (unsandboxed) {
       lines.unshift(`note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`);
     }
-    process.stdout.write(`${lines.join("\n")}\n`);
-    return failed ? 1 : 0;
+    if (options.json !== "-") process.stdout.write(`${lines.join("\n")}\n`);
+    if (options.json !== undefined) {
+      const { gradescopeResults } = await import("./core/results.mjs");
+      const results = gradescopeResults(result, { chapter, file: path.basename(options.module), language: options.language,
+        seconds: (Date.now() - started) / 1000, report: lines.join("\n"), notes: lines.filter((line) => line.startsWith("note: ")) });
+      writeResults(options.json, `${JSON.stringify(results, null, 2)}\n`);
+    }
+    return EXIT[result.verdict];
   } finally {
     runner.stop();
   }

@@ -178,7 +178,8 @@ function showValue(value) {
 // An answer's shape: what a runner may say, each field of its kind; anything else is
 // not an answer (a process that lies about what it is: a failed case, never a crash).
 const ANSWER_FIELDS = { timeout: "boolean", ended: "string", unreadable: "string", raised: "string",
-  adapter_failed: "string", garbled: "string", limit: "number", id: "number", nonce: "string", stopped: "boolean" };
+  adapter_failed: "string", garbled: "string", limit: "number", id: "number", nonce: "string", stopped: "boolean",
+  printed: "string", printed_cut: "boolean" };
 function wellFormed(answer) {
   if (!answer || typeof answer !== "object" || Array.isArray(answer)) return false;
   if ("placed" in answer && !(Array.isArray(answer.placed) && answer.placed.every((n) => typeof n === "string"))) return false;
@@ -201,6 +202,16 @@ function failureOf(answer, language, adapterGiven) {
   if (answer.garbled) return answer.garbled;
   if (!("returned" in answer) && !("pixels" in answer)) return "answered with something that is not an answer";
   return null;
+}
+
+// A case's status, as a course's results name it: "pass", "fail" (a value other than
+// ours), "error" (it raised, or answered with something that is not an answer) or
+// "timeout"; with the lines that say what went wrong.
+export function outcome(answer, kase, entry, options) {
+  const lines = verdict(answer, kase, entry, options);
+  if (!lines) return { status: "pass", lines: [] };
+  if (wellFormed(answer) && answer.timeout) return { status: "timeout", lines };
+  return { status: failureOf(answer, options.language, options.adapterGiven) ? "error" : "fail", lines };
 }
 
 // null when the case passes, else the lines that say what went wrong.

@@ -6,9 +6,14 @@
 // takes another listing's parameters. One core for the command line and the web page:
 // `runner` is theirs (a process in a sandbox, or a Web Worker).
 
-import { verdict } from "./judge.mjs";
+import { outcome } from "./judge.mjs";
 import { NAMES, PARTS, namesOf, partsGiven, partsOf } from "./names.mjs";
 import { casesFor, functionsOf, sections, signatureFor } from "./plan.mjs";
+import { readyCall } from "./ready_call.mjs";
+
+// What a case's record keeps of what the student's code printed, and what the text
+// report shows of it.
+const PRINTED_KEPT = 4000, PRINTED_SHOWN = 8;
 
 // The chapter cannot be checked at all (it does not load, or defines none of the
 // chapter's functions): one line.
@@ -137,43 +142,101 @@ function inputsOf(kase) {
   return JSON.stringify({ ...(kase.given ?? {}), ...(kase.args ?? { calls: kase.calls }) });
 }
 
-// Runs one function's cases; the lines of its block and whether it failed.
+// One case's record, for a course's results (--json): the function, the case, its status
+// (pass, fail, error, timeout, not written, not checked), what it catches, the message,
+// what came back against what was expected, what the student's code printed (theirs,
+// capped), and where there is one, the command that runs it alone.
+function record(entry, caseFile, number, status, message, extra = {}) {
+  const kase = entry.cases[number - 1];
+  return { function: entry.function, caseFile, case: number, status, message, catches: kase?.catches ?? "",
+    expected: kase?.expected ?? null, ...extra };
+}
+
+// The records of a function's cases that did not run, each with why.
+const notRun = (entry, caseFile, status, why, numbers = entry.cases.map((_, i) => i + 1)) =>
+  numbers.map((number) => record(entry, caseFile, number, status, why));
+
+// What a student's code printed in a case, as an answer gives it: a string, capped.
+function printedOf(answer) {
+  if (typeof answer.printed !== "string" || answer.printed === "") return null;
+  const cut = answer.printed.length > PRINTED_KEPT;
+  return { text: answer.printed.slice(0, PRINTED_KEPT), cut: cut || answer.printed_cut === true };
+}
+
+// The lines under a failed case that help with the next step: what the code printed,
+// the command that runs the case alone, and the call to paste into a REPL.
+function helpLines(entry, number, signature, kase, answer, context) {
+  const { file, options, caseFile } = context;
+  const lines = [];
+  const printed = printedOf(answer);
+  if (printed) {
+    const shown = printed.text.replace(/\n$/, "").split("\n");
+    lines.push("your code printed:", ...shown.slice(0, PRINTED_SHOWN).map((line) => `| ${line.slice(0, 200)}`));
+    if (shown.length > PRINTED_SHOWN || printed.cut) lines.push(`| ... (${printed.cut ? "cut at 4000 characters" : `${shown.length - PRINTED_SHOWN} more lines`}; --json keeps it)`);
+  }
+  if (options.rerun) lines.push(`alone: ${options.rerun(entry.function, caseFile, number)}`);
+  const call = options.repl ? readyCall(options.language, file, signature, kase, entry.returns === "pixels") : [];
+  if (call.length) {
+    const repl = options.language === "python" ? "python3" : "node";
+    lines.push(`in ${repl}, in your file's folder:`, ...call.map((line) => `  ${line}`));
+  }
+  return lines;
+}
+
+// Runs one function's cases; the lines of its block, whether it failed, and the records
+// of its cases.
 async function checkFunction(entry, fact, context) {
   const { runner, facts, file, caseFile, options } = context;
   const name = entry.function.padEnd(22);
+  const wanted = (number) => !context.onlyCase || context.onlyCase === number;
+  const all = entry.cases.map((_, i) => i + 1).filter(wanted);
   if (fact.forged) {  // the process's account of the file is not the file's
-    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${casesOf(entry.cases.length)}`, `    ${fact.forged}`] };
+    return { failed: true, lines: [`  ${name} FAILED ${all.length} of ${casesOf(all.length)}`, `    ${fact.forged}`],
+      records: notRun(entry, caseFile, "error", fact.forged, all) };
   }
   const signature = signatureFor(entry, fact.parameters);
   if (!signature) {
     const takes = `takes ${fact.parameters.names.length} parameters (${fact.parameters.names.join(", ")})`;
     const calls = [entry, ...(entry.signatures ?? [])].map((each) => `${each.call} (${each.where})`).join(" or ");
-    return { failed: true, lines: [`  ${name} FAILED ${entry.cases.length} of ${casesOf(entry.cases.length)}`,
-      `    ${entry.function} ${takes}; the checker calls ${calls}`] };
+    const why = `${entry.function} ${takes}; the checker calls ${calls}`;
+    return { failed: true, lines: [`  ${name} FAILED ${all.length} of ${casesOf(all.length)}`, `    ${why}`],
+      records: notRun(entry, caseFile, "error", why, all) };
   }
-  const cases = casesFor(entry, signature);
+  const cases = casesFor(entry, signature).filter(({ number }) => wanted(number));
   const failures = [];
+  const records = [];
   for (const { kase, number } of cases) {
     const answer = await runner.run({
       function: entry.function, parameters: signature.parameters, given: kase.given ?? {},
       calls: kase.calls ?? [kase.args], returns: entry.returns, drawing: entry.returns === "pixels",
       arguments: entry.returns === "triangles" || entry.returns === "corners",
     });
-    if (answer.stopped) return { failed: true, stopped: true, lines: [] };
-    const problem = verdict(answer, kase, entry, options);
-    if (problem) failures.push({ kase, number, problem, answer });
+    if (answer.stopped) {
+      const rest = cases.filter((each) => each.number >= number).map((each) => each.number);
+      return { failed: true, stopped: true, lines: [], records: [...records, ...notRun(entry, caseFile, "not checked", "the check stopped at its time bound", rest)] };
+    }
+    const { status, lines: problem } = outcome(answer, kase, entry, options);
+    const printed = printedOf(answer);
+    records.push(record(entry, caseFile, number, status, problem.join("; "), {
+      returned: "returned" in answer ? answer.returned : "pixels" in answer ? answer.pixels : null,
+      printed: printed?.text ?? "", printedCut: printed?.cut ?? false,
+      ...(status !== "pass" && options.rerun ? { rerun: options.rerun(entry.function, caseFile, number) } : {}),
+    }));
+    if (status !== "pass") failures.push({ kase, number, problem, answer });
   }
+  const skipped = entry.cases.map((_, i) => i + 1).filter((number) => wanted(number) && !cases.some((each) => each.number === number));
+  if (skipped.length) records.push(...notRun(entry, caseFile, "not checked", `yours is ${signature.call} (${signature.where}): this case calls ${entry.call}`, skipped));
   const lines = [];
   // Another listing's parameters: which cases that leaves, and why.
   const partial = [];
-  if (signature.call !== entry.call && cases.length < entry.cases.length) {
-    partial.push(`    only its cases for ${signature.call} (${signature.where}): the other ${entry.cases.length - cases.length} ` +
+  if (signature.call !== entry.call && skipped.length > 0) {
+    partial.push(`    only its cases for ${signature.call} (${signature.where}): the other ${skipped.length} ` +
       `call ${entry.call} (${entry.where})`);
   } else if (signature.call !== entry.call) {
     partial.push(`    called as ${signature.call} (${signature.where})`);
   }
-  const count = cases.length < entry.cases.length ? `${cases.length} of ${casesOf(entry.cases.length)}` : casesOf(cases.length);
-  if (failures.length === 0) return { failed: false, lines: [`  ${name} passed (${count})`, ...partial] };
+  const count = cases.length < all.length ? `${cases.length} of ${casesOf(all.length)}` : casesOf(cases.length);
+  if (failures.length === 0) return { failed: false, lines: [`  ${name} passed (${count})`, ...partial], records };
   lines.push(`  ${name} FAILED ${failures.length} of ${count}`, ...partial);
   // A bound default explains itself: the names a function reads come after it is fixed.
   const notes = boundNote(entry.function, fact);
@@ -191,9 +254,10 @@ async function checkFunction(entry, fact, context) {
     }
     const demos = demosNote(fact, facts, kase);
     lines.push(`    case ${number} of ${caseFile}: ${demos.heading ?? kase.catches}`, `      ${signature.call} with ${inputsOf(kase)}`,
-      ...problem.map((line) => `      ${line}`), ...(demos.line ? [`      ${demos.line}`] : []));
+      ...problem.map((line) => `      ${line}`), ...(demos.line ? [`      ${demos.line}`] : []),
+      ...helpLines(entry, number, signature, kase, answer, context).map((line) => `      ${line}`));
   }
-  return { failed: true, lines };
+  return { failed: true, lines, records };
 }
 
 // The line that ends a check which ran out of time: `seconds` it took, the most a check
@@ -203,26 +267,61 @@ export function stoppedLine(seconds, totalCases, { timeLimit, loadLimit }) {
     `${loadLimit} s to load): the cases after this one did not run`;
 }
 
+// The chapter's verdict from its cases' records: "complete" (every case of every
+// function passed), "partial" (every case that ran passed, but a function is not written
+// yet or some cases could not run: another listing's parameters), "incomplete" (a case
+// failed, or the check stopped).
+export function chapterVerdict(records, stopped) {
+  if (stopped || records.some((each) => ["fail", "error", "timeout"].includes(each.status))) return "incomplete";
+  return records.some((each) => each.status !== "pass") ? "partial" : "complete";
+}
+
+// The cases a check runs: every one, or one function's (only.function), or one case of
+// it (only.case: its number in the chapter's own case file, or "NN:number" in an earlier
+// chapter's). The sections narrowed to them.
+function narrowed(list, only) {
+  if (!only?.function) return list;
+  const [chapter, number] = only.case === undefined ? [null, null]
+    : String(only.case).includes(":") ? String(only.case).split(":") : [list[0].chapter.slice(0, 2), only.case];
+  return list.map((section) => ({ ...section,
+    changed: section.changed.filter((each) => each.function === only.function),
+    entries: section.entries.filter((entry) => entry.function === only.function &&
+      (chapter === null || section.chapter.startsWith(chapter))),
+    onlyCase: number === null ? null : Number(number) })).filter((section) => section.entries.length || section.changed.length);
+}
+
 // The whole check. runner: { language, load(functions, names) -> facts (or throws
-// CheckError), run(request) -> answer, stoppedLine() }. Returns { lines, failed }.
-export async function check({ chapter, files, runner, file, adapterGiven = false }) {
-  const list = sections(chapter, files);
-  const facts = await runner.load(functionsOf(list), NAMES);
+// CheckError), run(request) -> answer, stoppedLine() }; only: { function, case } to run
+// one function's cases or one case; rerun(function, caseFile, number): the command that
+// runs one case alone, where there is one; repl: whether to show a failed case as code to
+// paste into a REPL (the command line's, not a page's). Returns { lines, failed, records,
+// verdict }.
+export async function check({ chapter, files, runner, file, adapterGiven = false, only = null, rerun = null, repl = false }) {
+  const everything = sections(chapter, files);
+  const facts = await runner.load(functionsOf(everything), NAMES);
   const own = files[chapter].functions.map((entry) => entry.function);
-  if (!functionsOf(list).some((name) => name in facts.functions)) {
+  if (!functionsOf(everything).some((name) => name in facts.functions)) {
     const how = runner.language === "python" ? "as functions at your module's top level"
       : "as top-level functions (a plain script or a page) or exports (module.exports = { ... })";
     throw new CheckError(`${file} defines none of ${chapter}'s functions (${own.join(", ")}): write them under the book's names, ${how}`);
   }
-  const options = { language: runner.language, adapterGiven, chapter };
+  const list = narrowed(everything, only);
+  if (only?.function && list.length === 0) {
+    throw new CheckError(`${chapter} checks no function ${only.function}: its functions are ${functionsOf(everything).join(", ")}`);
+  }
+  const options = { language: runner.language, adapterGiven, chapter, rerun, repl };
   // First every function's cases, then the report, so that a function's block can say
   // that a function it calls failed too (wherever that is reported).
   const blocks = [];
   const failedFunctions = new Map();
   let stopped = false;
   const said = new Set();
+  const records = [];
   for (const section of list) {
-    const context = { runner, facts, file, caseFile: `${section.chapter}.json`, options };
+    const context = { runner, facts, file, caseFile: `${section.chapter}.json`, options, onlyCase: section.onlyCase };
+    if (section.onlyCase && !section.entries.some((entry) => section.onlyCase <= entry.cases.length)) {
+      throw new CheckError(`${section.chapter}.json has no case ${section.onlyCase} of ${only.function}`);
+    }
     const block = { section, results: [] };
     blocks.push(block);
     for (const { function: name, why } of section.changed) {
@@ -234,8 +333,14 @@ export async function check({ chapter, files, runner, file, adapterGiven = false
     for (const entry of section.entries) {
       // A function with an empty body (a page's starter) is not written yet either.
       const fact = facts.functions[entry.function]?.empty ? undefined : facts.functions[entry.function];
+      const numbers = entry.cases.map((_, i) => i + 1).filter((number) => !section.onlyCase || number === section.onlyCase);
       if (stopped || !fact) {
-        if (section.own && !fact) block.results.push({ lines: [`  ${entry.function.padEnd(22)} not written yet (${casesOf(entry.cases.length)})`] });
+        if (section.own && !fact) {
+          block.results.push({ lines: [`  ${entry.function.padEnd(22)} not written yet (${casesOf(numbers.length)})`] });
+          records.push(...notRun(entry, context.caseFile, "not written", `your file has no ${entry.function} yet`, numbers));
+        } else if (stopped) {
+          records.push(...notRun(entry, context.caseFile, "not checked", "the check stopped at its time bound", numbers));
+        }
         continue;
       }
       if (!section.own && !fact.forged && !signatureFor(entry, fact.parameters)) {
@@ -246,6 +351,7 @@ export async function check({ chapter, files, runner, file, adapterGiven = false
       const result = await checkFunction(entry, fact, context);
       result.function = entry.function;
       block.results.push(result);
+      records.push(...result.records);
       if (result.failed && !failedFunctions.has(entry.function)) failedFunctions.set(entry.function, section.chapter);
       if (result.stopped) stopped = true;
     }
@@ -257,7 +363,19 @@ export async function check({ chapter, files, runner, file, adapterGiven = false
     lines.push(...shown);
   }
   if (stopped) lines.push(runner.stoppedLine());
-  return { lines, failed: stopped || failedFunctions.size > 0 };
+  const verdict = chapterVerdict(records, stopped);
+  lines.push(verdictLine(verdict, records, only));
+  return { lines, failed: stopped || failedFunctions.size > 0, records, verdict };
+}
+
+// The report's last line: the chapter's verdict and its counts.
+function verdictLine(verdict, records, only) {
+  const count = (status) => records.filter((each) => each.status === status).length;
+  const parts = [["pass", "passed"], ["fail", "failed"], ["error", "raised or answered wrongly"], ["timeout", "ran out of time"],
+    ["not written", "not written yet"], ["not checked", "not checked"]]
+    .filter(([status]) => count(status) > 0).map(([status, words]) => `${count(status)} ${words}`);
+  const what = only?.function ? `${only.function}${only.case !== undefined ? `, case ${only.case}` : ""}` : "chapter";
+  return `${what}: ${verdict} (${casesOf(records.length)}: ${parts.join(", ")})`;
 }
 
 // A failed function's lines, with a line naming the functions of the student's it calls

@@ -20,6 +20,7 @@ import Module, { createRequire } from "node:module";
 import path from "node:path";
 import readline from "node:readline";
 import { pathToFileURL } from "node:url";
+import util from "node:util";
 import vm from "node:vm";
 import { ChapterBase, GETTER, LoadError, MAX_ANSWER, SETTER, constsMadeLet, declarations, defaultAdapter, factsOf,
   helpers, moduleMadeSettable, oneLine, parse, runCase, syntaxError, useParser } from "./js_core.mjs";
@@ -29,6 +30,7 @@ import { installPage } from "./page_stand_in.mjs";
 const require = createRequire(import.meta.url);
 useParser(require("acorn"), require("acorn-globals"));
 const RUNNER_DIR = path.dirname(new URL(import.meta.url).pathname);
+const MAX_PRINTED = 4000;  // characters of what one case printed, kept for the report
 
 // The chapter, loaded from its file in this process's global scope.
 class Chapter extends ChapterBase {
@@ -111,6 +113,30 @@ async function loadAdapter(file, chapter) {
   return loaded && typeof loaded === "object" ? loaded : {};
 }
 
+// What a case prints (console's methods, process.stdout and stderr), kept while it runs
+// in place of the output (the first MAX_PRINTED characters).
+function capturePrinting() {
+  let text = "";
+  const keep = (more) => {
+    if (text.length <= MAX_PRINTED) text += more.slice(0, MAX_PRINTED + 1 - text.length);
+  };
+  const methods = ["log", "info", "debug", "warn", "error", "trace"];
+  const saved = { console: methods.map((name) => console[name]), out: process.stdout.write, err: process.stderr.write };
+  for (const name of methods) console[name] = (...values) => keep(`${util.format(...values)}\n`);
+  process.stdout.write = process.stderr.write = (chunk) => {
+    keep(typeof chunk === "string" ? chunk : Buffer.from(chunk).toString("utf8"));
+    return true;
+  };
+  return {
+    stop() {
+      methods.forEach((name, i) => { console[name] = saved.console[i]; });
+      Object.assign(process.stdout, { write: saved.out });
+      Object.assign(process.stderr, { write: saved.err });
+    },
+    printed: () => (text ? { printed: text.slice(0, MAX_PRINTED), printed_cut: text.length > MAX_PRINTED } : {}),
+  };
+}
+
 function send(message) {
   let text;
   try {
@@ -163,13 +189,16 @@ async function main() {
     const request = JSON.parse(next.value);
     let answer;
     globalThis.__cgfsCase = () => runCase(request, chapter, adapter, load.names, readNames, functionReads, [RUNNER_DIR]);
+    const printing = capturePrinting();
     try {
       answer = vm.runInThisContext("globalThis.__cgfsCase()", { timeout: Math.round(request.limit * 1000) });
     } catch (error) {
       answer = error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT" ? { timeout: true }
         : { unreadable: `returned something that cannot be sent (${oneLine(error, [RUNNER_DIR])})` };
+    } finally {
+      printing.stop();
     }
-    send({ ...answer, id: request.id, nonce: request.nonce });
+    send({ ...answer, ...printing.printed(), id: request.id, nonce: request.nonce });
   }
   process.exit(0);
 }

@@ -40,6 +40,7 @@ RUNNER_DIR = str(Path(__file__).resolve().parent)
 MAX_ANSWER = 4 << 20  # bytes of one answer
 MAX_ITEMS = 200_000  # numbers, strings and lists in one answer
 MAX_PIXELS = 100_000  # PutPixel calls one case may make
+MAX_PRINTED = 4000  # characters of what one case printed, kept for the report
 
 Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: chapter 8's intensity
 Vector = collections.namedtuple("Vector", "x y z")
@@ -910,10 +911,16 @@ def in_child(request, chapter, write_end):
     except (AttributeError, OSError):
         pass
     signal.signal(signal.SIGINT, signal.SIG_DFL)
+    printed = capture_printing()
     try:
-        text = encoded(run_case(request, chapter))
+        answer = run_case(request, chapter)
     except BaseException as error:  # the student's code made our own fail: say so
+        answer = {"raised": one_line(error)}
+    try:
+        text = encoded(answer)
+    except BaseException as error:
         text = json.dumps({"raised": one_line(error)})
+    text = json.dumps({**json.loads(text), **printed_text(printed)})
     data = text.encode()
     while data:
         try:
@@ -921,6 +928,36 @@ def in_child(request, chapter, write_end):
         except OSError:
             break
     os._exit(0)
+
+
+def capture_printing():
+    """What the case prints (print, sys.stderr, a C library's or a child's output), kept
+    in a file in memory in place of the standard output and error; its descriptor."""
+    try:
+        kept = os.memfd_create("printed")
+    except (AttributeError, OSError):
+        return None
+    for fd in (1, 2):
+        os.dup2(kept, fd)
+    return kept
+
+
+def printed_text(kept):
+    """{"printed": the first MAX_PRINTED characters the case printed, "printed_cut"}."""
+    if kept is None:
+        return {}
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except Exception:
+            pass
+    try:
+        os.lseek(kept, 0, os.SEEK_SET)
+        data = os.read(kept, MAX_PRINTED + 1)
+    except OSError:
+        return {}
+    text = data[:MAX_PRINTED].decode("utf-8", errors="replace")
+    return {"printed": text, "printed_cut": len(data) > MAX_PRINTED} if text else {}
 
 
 def run_in_child(request, chapter, limit):
