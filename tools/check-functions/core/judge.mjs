@@ -204,14 +204,85 @@ function failureOf(answer, language, adapterGiven) {
   return null;
 }
 
+// ---- The slip behind a wrong answer ---------------------------------------------------
+
+// What a wrong answer is, recognised from the numbers alone, before any story of what the
+// case was written to catch: ours in another order, rounded to whole levels, with a sign
+// flipped, times one factor, or, for a drawing, ours moved by one pixel. null when it is
+// none of these.
+export function slipOf(kind, actual, expected, tolerance) {
+  const near = (a, e) => (Number.isFinite(e) ? Math.abs(a - e) <= Math.max(tolerance, 1e-9 * Math.abs(e)) : a === e);
+  const same = (a, b) => a.length === b.length && a.every((each, i) => near(each, b[i]));
+  if (actual.length !== expected.length || actual.length === 0 || actual.length > 16) return null;
+  const sorted = (values) => [...values].sort((a, b) => a - b);
+  if (actual.length > 1 && same(sorted(actual), sorted(expected))) {
+    return kind === "roots" ? "yours are our two roots in the other order: the book returns t1 = (-b + √disc) / 2a first"
+      : `yours is ${shown(expected)} in another order: check the order you return them in`;
+  }
+  const fractional = expected.some((e) => Number.isFinite(e) && Math.abs(e - Math.round(e)) > 1e-6);
+  if (kind === "color" && fractional) {
+    if (same(actual, expected.map((e) => Math.round(e))) || same(actual, expected.map((e) => Math.floor(e)))) {
+      return `yours is ours ${shown(expected)} ${same(actual, expected.map(Math.round)) ? "rounded" : "cut"} to whole levels: ` +
+        "keep the colour's fractions; it is clamped and rounded only where the pixel is put";
+    }
+  }
+  const flipped = actual.map((a, i) => Number.isFinite(expected[i]) && expected[i] !== 0 && near(a, -expected[i]));
+  if (flipped.some(Boolean) && actual.every((a, i) => flipped[i] || near(a, expected[i]))) {
+    const names = kind === "color" ? ["r", "g", "b"] : ["x", "y", "z", "w"];
+    const which = flipped.every((each, i) => each || expected[i] === 0) ? "every" : `the ${flipped.map((f, i) => (f ? names[i] ?? `#${i + 1}` : null)).filter(Boolean).join(" and ")}`;
+    return `yours is ours ${shown(expected)} with ${which === "every" ? "its sign" : `${which}'s sign`} flipped: a vector the other way round (P - Q for Q - P, -D for D)`;
+  }
+  const pairs = actual.map((a, i) => [a, expected[i]]).filter(([, e]) => Number.isFinite(e) && e !== 0);
+  if (pairs.length > 0 && actual.every((a, i) => pairs.some(([, e]) => e === expected[i]) || near(a, expected[i]))) {
+    const factor = pairs[0][0] / pairs[0][1];
+    if (Number.isFinite(factor) && Math.abs(factor - 1) > 1e-6 && factor !== 0 && pairs.every(([a, e]) => near(a, e * factor))) {
+      const how = kind === "vector" ? ": a vector not normalised, or normalised where the book leaves it" :
+        kind === "color" ? ": an intensity counted twice or not at all" : "";
+      return `yours is ours ${shown(expected)} times ${String(+factor.toPrecision(6))}${how}`;
+    }
+  }
+  return null;
+}
+
+// The one-pixel shift that makes a drawing ours, said; null when there is none.
+function pixelShift(drawn, expected) {
+  if (drawn.length !== expected.length || drawn.length === 0) return null;
+  const key = (p) => p.join(",");
+  const ours = new Set(expected.map(key));
+  for (const [dx, dy, words] of [[1, 0, "one column right"], [-1, 0, "one column left"], [0, 1, "one row up"], [0, -1, "one row down"]]) {
+    if (drawn.every(([x, y, ...rgb]) => ours.has(key([x - dx, y - dy, ...rgb])))) {
+      return `your pixels are ours moved ${words}: check where x and y are rounded, and each loop's first and last value`;
+    }
+  }
+  return null;
+}
+
 // A case's status, as a course's results name it: "pass", "fail" (a value other than
 // ours), "error" (it raised, or answered with something that is not an answer) or
-// "timeout"; with the lines that say what went wrong.
+// "timeout"; with the lines that say what went wrong, and the slip when one is
+// recognised.
 export function outcome(answer, kase, entry, options) {
   const lines = verdict(answer, kase, entry, options);
   if (!lines) return { status: "pass", lines: [] };
   if (wellFormed(answer) && answer.timeout) return { status: "timeout", lines };
-  return { status: failureOf(answer, options.language, options.adapterGiven) ? "error" : "fail", lines };
+  if (failureOf(answer, options.language, options.adapterGiven)) return { status: "error", lines };
+  let slip = null;
+  if (entry.returns === "pixels") {
+    const drawn = Array.isArray(answer.pixels) ? drawnPixels(answer.pixels, kase.given.canvas) : null;
+    slip = drawn && pixelShift(drawn, kase.expected);
+  } else {
+    const actual = numbersOf(entry.returns, answer, kase, entry.parameters);
+    if (actual && !["closest", "triangles", "corners"].includes(entry.returns)) {
+      slip = slipOf(entry.returns, actual, expectedNumbers(kase.expected), kase.tolerance ?? 0);
+    }
+  }
+  return { status: "fail", lines, slip };
+}
+
+// Whether the answer is the one the book's demo pages give (a case's demos_expected),
+// where the case says they differ from the book.
+export function demosAnswer(answer, kase, entry, options) {
+  return kase.demos_expected !== undefined && !verdict(answer, { ...kase, expected: kase.demos_expected }, entry, options);
 }
 
 // null when the case passes, else the lines that say what went wrong.

@@ -6,7 +6,7 @@
 // takes another listing's parameters. One core for the command line and the web page:
 // `runner` is theirs (a process in a sandbox, or a Web Worker).
 
-import { outcome } from "./judge.mjs";
+import { demosAnswer, outcome } from "./judge.mjs";
 import { NAMES, PARTS, namesOf, partsGiven, partsOf } from "./names.mjs";
 import { casesFor, functionsOf, sections, signatureFor } from "./plan.mjs";
 import { readyCall } from "./ready_call.mjs";
@@ -99,9 +99,9 @@ function boundNote(name, fact) {
 // Where a chapter meets a case its design cannot pass, or the demos answer otherwise:
 // { heading } when it cannot pass the case at all (a square viewport, the demos'
 // viewport_size or a VIEWPORT_SIZE of its own, cannot be 1.5 × 1), so that the case's own
-// heading, a mistake the chapter did not make, is not shown; { line } for a chapter in
-// the demos' style where the case's file says the demos differ (an open interval).
-function demosNote(fact, facts, kase) {
+// heading, a mistake the chapter did not make, is not shown; { line } where the answer
+// is the one the demos give and the case's file says they differ (an open interval).
+function demosNote(fact, facts, kase, demosGave) {
   const viewport = kase.given?.viewport;
   const square = (fact.reads ?? []).map(([name]) => name).find((name) => /viewport_?size/i.test(name));
   if (viewport && viewport.width !== viewport.height && square) {
@@ -109,9 +109,7 @@ function demosNote(fact, facts, kase) {
     return { heading: square === "viewport_size" ? `this is where the demos and the book differ: the demos' viewport is square ` +
       `(viewport_size); ${size}` : `your viewport is square (\`${square}\`): ${size}` };
   }
-  const demoStyle = (fact.reads ?? []).some(([name]) => NAMES[name]?.dialect === "demos") ||
-    facts.defined.some((name) => NAMES[name]?.dialect === "demos");
-  return demoStyle && kase.demos ? { line: `this is where the demos and the book differ: ${kase.demos}` } : {};
+  return demosGave && kase.demos ? { line: `this is where the demos and the book differ: ${kase.demos}` } : {};
 }
 
 // An error that says the function expected types of its own: a method the checker's
@@ -215,14 +213,14 @@ async function checkFunction(entry, fact, context) {
       const rest = cases.filter((each) => each.number >= number).map((each) => each.number);
       return { failed: true, stopped: true, lines: [], records: [...records, ...notRun(entry, caseFile, "not checked", "the check stopped at its time bound", rest)] };
     }
-    const { status, lines: problem } = outcome(answer, kase, entry, options);
+    const { status, lines: problem, slip } = outcome(answer, kase, entry, options);
     const printed = printedOf(answer);
     records.push(record(entry, caseFile, number, status, problem.join("; "), {
       returned: "returned" in answer ? answer.returned : "pixels" in answer ? answer.pixels : null,
       printed: printed?.text ?? "", printedCut: printed?.cut ?? false,
       ...(status !== "pass" && options.rerun ? { rerun: options.rerun(entry.function, caseFile, number) } : {}),
     }));
-    if (status !== "pass") failures.push({ kase, number, problem, answer });
+    if (status !== "pass") failures.push({ kase, number, problem, answer, slip, demos: demosAnswer(answer, kase, entry, options) });
   }
   const skipped = entry.cases.map((_, i) => i + 1).filter((number) => wanted(number) && !cases.some((each) => each.number === number));
   if (skipped.length) records.push(...notRun(entry, caseFile, "not checked", `yours is ${signature.call} (${signature.where}): this case calls ${entry.call}`, skipped));
@@ -245,15 +243,17 @@ async function checkFunction(entry, fact, context) {
   const mismatched = failures.map(({ answer }) => typeMismatch(answer, signature, options.language)).find(Boolean);
   if (mismatched) notes.push(typeNote(entry.function, mismatched, { ...options, file }));
   lines.push(...notes.map((note) => `    ${note}`));
-  for (const { kase, number, problem, answer } of failures) {
+  for (const { kase, number, problem, answer, slip, demos: demosGave } of failures) {
     const consequence = fact.bound?.length || unreached(fact, facts, entry, kase, answer, options.adapterGiven).length ||
       (mismatched && typeMismatch(answer, signature, options.language));
     if (notes.length > 0 && consequence) {
       lines.push(`    case ${number} of ${caseFile} (a consequence of the line above): ${problem.join("; ")}`);
       continue;
     }
-    const demos = demosNote(fact, facts, kase);
-    lines.push(`    case ${number} of ${caseFile}: ${demos.heading ?? kase.catches}`, `      ${signature.call} with ${inputsOf(kase)}`,
+    // The slip, where the numbers show one, before what the case was written to catch.
+    const demos = demosNote(fact, facts, kase, demosGave);
+    const heading = demos.heading ?? (slip && !demosGave ? `${slip} (this case catches: ${kase.catches})` : kase.catches);
+    lines.push(`    case ${number} of ${caseFile}: ${heading}`, `      ${signature.call} with ${inputsOf(kase)}`,
       ...problem.map((line) => `      ${line}`), ...(demos.line ? [`      ${demos.line}`] : []),
       ...helpLines(entry, number, signature, kase, answer, context).map((line) => `      ${line}`));
   }
