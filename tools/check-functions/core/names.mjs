@@ -4,7 +4,7 @@
 // case a runner sets every name below that the case gives: the book's always, the demos'
 // where the chapter defines or reads them. `path` is where the value is in the case's
 // "given", `kind` how a runner builds it (a number when absent), `part` what a report
-// calls it. One table, sent to every runner, so that what is set and what a report says
+// calls it, `empty` its value when the case gives the record around it but not it. One table, sent to every runner, so that what is set and what a report says
 // was set cannot disagree.
 
 export const NAMES = {
@@ -24,8 +24,9 @@ export const NAMES = {
   canvas: { path: "canvas", kind: "canvas", part: "canvas", parts: ["canvas", "PutPixel"], dialect: "demos" },
   viewport_size: { path: "viewport.width", part: "viewport", dialect: "demos", square: true },
   projection_plane_z: { path: "viewport.d", part: "viewport", dialect: "demos" },
-  spheres: { path: "scene.spheres", kind: "spheres", part: "spheres", dialect: "demos" },
-  lights: { path: "scene.lights", kind: "lights", part: "lights", dialect: "demos" },
+  // A case that gives a scene without spheres or lights has none: [] (not the last case's).
+  spheres: { path: "scene.spheres", kind: "spheres", part: "spheres", dialect: "demos", empty: [] },
+  lights: { path: "scene.lights", kind: "lights", part: "lights", dialect: "demos", empty: [] },
   background_color: { path: "scene.background_color", kind: "color", part: "background", dialect: "demos" },
   camera_position: { path: "camera.position", kind: "vector", part: "camera", dialect: "demos" },
   camera_rotation: { path: "camera.rotation", kind: "rows", part: "camera", dialect: "demos" },

@@ -34,9 +34,9 @@ const PYTHON_VALUES = {
   "viewport.width": 'given["viewport"]["width"]',
   "viewport.height": 'given["viewport"]["height"]',
   "viewport.d": 'given["viewport"]["d"]',
-  "scene.spheres": 'adapter.spheres(given["scene"]["spheres"])',
-  "scene.lights": 'adapter.lights(given["scene"]["lights"])',
-  "scene.background_color": 'adapter.color(given["scene"]["background_color"])',
+  "scene.spheres": 'adapter.spheres(given["scene"].get("spheres", []))',
+  "scene.lights": 'adapter.lights(given["scene"].get("lights", []))',
+  "scene.background_color": 'adapter.color(given["scene"].get("background_color", [255, 255, 255]))',
   "camera.position": 'adapter.vector(given["camera"]["position"])',
   "camera.rotation": 'adapter.rows(given["camera"]["rotation"])',
 };
@@ -49,9 +49,9 @@ const JS_VALUES = {
   "viewport.width": "given.viewport.width",
   "viewport.height": "given.viewport.height",
   "viewport.d": "given.viewport.d",
-  "scene.spheres": "adapter.spheres(given.scene.spheres, adapter)",
-  "scene.lights": "adapter.lights(given.scene.lights, adapter)",
-  "scene.background_color": "adapter.color(given.scene.background_color, adapter)",
+  "scene.spheres": "adapter.spheres(given.scene.spheres ?? [], adapter)",
+  "scene.lights": "adapter.lights(given.scene.lights ?? [], adapter)",
+  "scene.background_color": "adapter.color(given.scene.background_color ?? [255, 255, 255], adapter)",
   "camera.position": "adapter.vector(given.camera.position, adapter)",
   "camera.rotation": "adapter.rows(given.camera.rotation, adapter)",
 };
@@ -77,7 +77,9 @@ function assignments(facts, language) {
     const path = guess(name);
     if (!path) { unknown.push(name); continue; }
     const [part, field] = path.split(".");
-    const key = part === "scene" && field !== "size" ? `scene.${field}` : part;
+    // Every case that gives a scene sets all of it: what it does not give is empty, so
+    // that nothing of the case before stays.
+    const key = part;
     if (!groups.has(key)) groups.set(key, []);
     // A list is filled in place in Python, so that a default argument bound to it sees it.
     const list = python && /^a list/.test(facts.data[name] ?? "");

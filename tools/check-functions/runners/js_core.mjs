@@ -417,7 +417,8 @@ export function defaultAdapter(made) {
 function place(chapter, names, given, adapter, readNames) {
   const placed = [];
   for (const [name, spec] of Object.entries(names)) {
-    const value = at(given, spec.path);
+    let value = at(given, spec.path);
+    if ((value === undefined || value === null) && spec.empty && at(given, spec.path.split(".").slice(0, -1).join("."))) value = spec.empty;
     if (value === undefined || value === null) continue;
     if (spec.dialect !== "book" && !chapter.declared.has(name) && !readNames.has(name)) continue;
     const kind = spec.kind ?? "number";
@@ -526,9 +527,28 @@ function setUpByAdapter(chapter, adapter, given, readNames) {
     const value = chapter.value(name);
     return Array.isArray(value) ? [value, ...value] : value && typeof value === "object" ? [value, ...Object.values(value)] : [value];
   };
+  // A number or string is boxed while setup runs, so that setting it again to the same
+  // value (600 for 600) is seen as set; one left as it was is unboxed.
+  const boxed = new Map();
+  for (const name of readNames) {
+    const value = chapter.value(name);
+    if (typeof value === "number" || typeof value === "string") {
+      const box = Object(value);
+      chapter.assign(name, box);
+      boxed.set(name, [box, value]);
+    }
+  }
   const before = new Map([...readNames].map((name) => [name, fingerprint(name)]));
-  adapter.setup(chapter.asModule(), given, adapter);
+  try {
+    adapter.setup(chapter.asModule(), given, adapter);
+  } finally {
+    for (const [name, [box, value]] of boxed) {
+      if (chapter.value(name) === box) chapter.assign(name, value);
+      else boxed.set(name, null);  // set by the setup
+    }
+  }
   return [...readNames].filter((name) => {
+    if (boxed.has(name)) return boxed.get(name) === null;
     const now = fingerprint(name), then = before.get(name);
     return now.length !== then.length || now.some((each, i) => each !== then[i]);
   });

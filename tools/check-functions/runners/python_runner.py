@@ -497,6 +497,8 @@ class Chapter:
         placed = set()
         for name, spec in self.names.items():
             value = at(given, spec["path"])
+            if value is None and "empty" in spec and at(given, spec["path"].rsplit(".", 1)[0]) is not None:
+                value = spec["empty"]
             targets = self.targets(name, spec["dialect"]) if value is not None else []
             for module in targets:
                 if spec.get("kind") == "canvas":  # the demos' canvas: its size, set in place
@@ -536,15 +538,60 @@ class Chapter:
         placed = self.place(given)
         if not hasattr(self.adapter, "own_setup"):
             return placed
+        marked = self.mark(function)
         before = self.fingerprints(function)
         setup = self.adapter.own_setup
         try:
             takes_adapter = len(inspect.signature(setup).parameters) >= 3
         except (TypeError, ValueError):
             takes_adapter = False
-        setup(self.main, given, self.adapter) if takes_adapter else setup(self.main, given)
+        try:
+            setup(self.main, given, self.adapter) if takes_adapter else setup(self.main, given)
+        finally:
+            set_again = self.unmark(marked)
         after = self.fingerprints(function)
-        return placed | {name for name in after if after[name] != before.get(name)}
+        return placed | set_again | {name for name in after if after[name] != before.get(name)}
+
+    def mark(self, function):
+        """The numbers and strings a function reads, each replaced while the adapter's
+        setup runs by an equal value of its own (a subclass), so that setting one again to
+        the same value (600 for 600) is seen as set: {(module, name): (mark, value)}."""
+        marked = {}
+        for name, label, _ in self.facts["functions"].get(function, {}).get("reads") or []:
+            module = self.modules.get(label)
+            value = getattr(module, name, None) if module is not None else None
+            kind = MARKS.get(type(value))
+            if kind is not None:
+                mark = kind(value)
+                setattr(module, name, mark)
+                marked[(module, name)] = (mark, value)
+        return marked
+
+    @staticmethod
+    def unmark(marked):
+        """The names the setup set; the others given back their own values."""
+        set_again = set()
+        for (module, name), (mark, value) in marked.items():
+            if getattr(module, name, None) is mark:
+                setattr(module, name, value)
+            else:
+                set_again.add(name)
+        return set_again
+
+
+class MarkedInt(int):
+    pass
+
+
+class MarkedFloat(float):
+    pass
+
+
+class MarkedStr(str):
+    pass
+
+
+MARKS = {int: MarkedInt, float: MarkedFloat, str: MarkedStr}
 
 
 def set_size(module, name, canvas):
