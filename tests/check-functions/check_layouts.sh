@@ -47,7 +47,7 @@ forged() {  # WHAT: the forger failed its case, and learnt nothing of the checke
   check "$1: CanvasToViewport failed" says "^  CanvasToViewport +FAILED 5 of 5 cases"
   check "$1: no answer found (0 answers)" says "\(0 answers\)"
   check "$1: /proc/1 shows none of the checker's command line or environment" \
-    bash -c '! grep -qE "check-functions\.js|CGFS_LAYOUT_SECRET|checker-environment|HOME=|PATH=" "$1"' _ "$work/out.txt"
+    bash -c 'grep "leaked:" "$1" | grep -q . && ! grep "leaked:" "$1" | grep -qE "check-functions\.js|CGFS_LAYOUT_SECRET|checker-environment|HOME=|PATH="' _ "$work/out.txt"
 }
 
 echo "== the forger in the project's own layout"
