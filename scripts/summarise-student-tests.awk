@@ -9,6 +9,16 @@
 # For a failed test, the reason to print under it: the image diagnosis ("your image
 # is ours moved one row down") or else its numbers, and its first wrong pixel; else the
 # first failed check with what its values were, and what it was given (INFO).
+# A name and its verdict, the verdict in the column after 22 characters of names; a
+# longer name on a line of its own above it, so that every verdict starts in one column.
+function row(name, verdict) {
+  if (length(name) > 22) {
+    printf "  %s\n  %-22s %s\n", name, "", verdict
+  } else {
+    printf "  %-22s %s\n", name, verdict
+  }
+}
+
 function trimmed(text) {
   sub(/^ +/, "", text)
   sub(/ +$/, "", text)
@@ -180,14 +190,14 @@ END {
         verdict = verdict (verdict == "" ? "" : "; ") \
                   (written > 0 ? skipped[key] " " : "") waiting
       }
-      printf "  %-22s %s\n", group, verdict
+      row(group, verdict)
       printf "%s", failures[key]
       is_group[chapter, group] = 1
     }
     for (m = 1; m <= missing_count[chapter]; m++) {
       fn = missing[chapter, m]
       if (!((chapter, fn) in is_group)) {
-        printf "  %-22s not written yet\n", fn
+        row(fn, "not written yet")
       }
     }
   }

@@ -3,7 +3,7 @@
 # a student folder holding raytracer.h, raytracer.cpp and scenes.cpp for chapter 02
 # (no main.cpp, no scenes.h), judged by `scripts/test-student ~/my-cgfs`, run in a
 # copy of the repository with HOME pointing at a scratch folder.
-#   - a faithful copy passes, and render writes into build-student/out/;
+#   - a faithful copy passes, and render writes into build-student/my-cgfs/out/;
 #   - a half-written copy (only CanvasToViewport and IntersectRaySphere) passes what
 #     is written and reports the rest as not written yet, by name;
 #   - a copy with one mistake fails, naming the test;
@@ -67,8 +67,8 @@ cp "$ours/raytracer.h" "$ours/raytracer.cpp" "$ours/scenes.cpp" "$student/"
 run ~/my-cgfs
 check "a faithful copy passes" test $status -eq 0
 check "every test of chapter 02 ran and passed" says "^$chapter: [0-9]+ passed, 0 failed, 0 not written yet"
-cmake --build build-student --target render >"$work/render.log" 2>&1
-check "render writes into build-student/out/" test -f "build-student/out/$chapter/fig-2-11.png"
+cmake --build build-student/my-cgfs --target render >"$work/render.log" 2>&1
+check "render writes into build-student/my-cgfs/out/" test -f "build-student/my-cgfs/out/$chapter/fig-2-11.png"
 check "render leaves out/ alone" test ! -e out
 
 echo "== half written: only CanvasToViewport and IntersectRaySphere"
@@ -102,7 +102,7 @@ run ~/my-cgfs 02
 check "the fixed chapter passes" test $status -eq 0
 check "no failure page is announced after a pass" bash -c '! grep -q "images of the failed" "$1"' \
   _ "$work/out.txt"
-check "no failure page is left behind" test ! -e build-student/test-output/report.html
+check "no failure page is left behind" test ! -e build-student/my-cgfs/test-output/report.html
 
 echo "== signatures unlike ours: TraceRay's vectors by value in the header (and .cpp);"
 echo "   RenderScene defined in the .cpp with a parameter more than the header declares"
@@ -146,7 +146,7 @@ check "its first error is given, at the student's line" \
 check "the other chapter is tested all the same" says "^$chapter: [0-9]+ passed, 0 failed"
 check "docs/students.md shows this run" shows_example compile-error
 check "ctest after the failed build does not pass" \
-  bash -c '! ctest --test-dir build-student >/dev/null 2>&1'
+  bash -c '! ctest --test-dir build-student/my-cgfs >/dev/null 2>&1'
 run ~/my-cgfs 02
 check "chapter 02 asked for alone passes: the broken 03 is not even built" test $status -eq 0
 rm -r ~/my-cgfs/03-light

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/summarise-student-tests.awk, the summary scripts/test-student prints, on a
 # made-up ctest run: a book function's tests under its name, golden images together,
-# and every other test on a line of its own, under its own name, passed or failed.
+# and every other test on a line of its own, under its own name, passed or failed, a
+# name longer than the names' column above its verdict, which stays in its column.
 # Usage: check_summary.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 source_dir=$1 work=$2
@@ -21,9 +22,11 @@ failed=0
 want() { grep -qxF -- "$1" "$work/out.txt" || { echo "FAIL: no line '$1'"; failed=1; }; }
 want "03-light: 3 passed, 2 failed, 0 not written yet"
 want "  ComputeLighting        passed (1 test)"
-want "  the green highlight goes above 255 before it is clamped passed (1 test)"
+want "  the green highlight goes above 255 before it is clamped"
+want "                         passed (1 test)"
 want "  golden images          FAILED 1 of 1 tests"
-want "  Listing 3-1 lights a matte sphere FAILED 1 of 1 tests"
+want "  Listing 3-1 lights a matte sphere"
+want "                         FAILED 1 of 1 tests"
 want "  RenderScene            passed (1 test)"
 [ $failed -eq 0 ] && echo "PASS: the summary names every test"
 exit $failed
