@@ -11,13 +11,8 @@ set -euo pipefail
 source_dir=$1 work=$2 deep=${3:-}
 rm -rf "$work"
 mkdir -p "$work"
-failed=0
-check() {
-  local what=$1
-  shift
-  if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; failed=1; fi
-}
-says() { grep -qE -- "$1" "$work/out.txt"; }
+# shellcheck source=tests/check-functions/checks.sh
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh"
 checker=$source_dir/tools/check-functions/check-functions.js
 reference=$source_dir/tools/check-functions/reference
 marker=cgfs-hostile-$$

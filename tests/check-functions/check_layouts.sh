@@ -16,13 +16,8 @@ source_dir=$(realpath "$1") work=$2
 rm -rf "$work"
 mkdir -p "$work"
 work=$(realpath "$work")
-failed=0
-check() {
-  local what=$1
-  shift
-  if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; failed=1; fi
-}
-says() { grep -qE -- "$1" "$work/out.txt"; }
+# shellcheck source=tests/check-functions/checks.sh
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh"
 if ! command -v node >/dev/null || ! bwrap --ro-bind / / --unshare-all true 2>/dev/null; then
   echo "SKIPPED: no node or no bubblewrap sandbox here (CI installs both: scripts/setup)"
   exit 0

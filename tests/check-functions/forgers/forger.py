@@ -16,7 +16,7 @@ SKIP = {"/usr", "/proc", "/sys", "/dev", "/bin", "/sbin", "/lib", "/lib32", "/li
 def clues():
     """Whatever /proc/1 tells of the checker: its words and environment."""
     found = []
-    for name in ("cmdline", "environ"):
+    for name in ("environ", "cmdline"):  # the environment first: a long message is cut short
         try:
             with open(f"/proc/1/{name}", "rb") as text:
                 found += text.read().decode(errors="replace").split("\0")
@@ -86,5 +86,6 @@ def CanvasToViewport(x, y):
 
 
 def IntersectRaySphere(O, D, sphere):
-    """Says, in the message of what it raises, what /proc/1 showed of the checker."""
-    raise RuntimeError("leaked: " + " ".join(LEAKED) + f" ({len(ANSWERS)} answers)")
+    """Says, in the message of what it raises, how many answers it found and what /proc/1
+    showed of the checker (the count first: a long message is cut short)."""
+    raise RuntimeError(f"({len(ANSWERS)} answers) leaked: " + " ".join(LEAKED))
