@@ -229,15 +229,19 @@ export function slipOf(kind, actual, expected, tolerance) {
   const flipped = actual.map((a, i) => Number.isFinite(expected[i]) && expected[i] !== 0 && near(a, -expected[i]));
   if (flipped.some(Boolean) && actual.every((a, i) => flipped[i] || near(a, expected[i]))) {
     const names = kind === "color" ? ["r", "g", "b"] : ["x", "y", "z", "w"];
-    const which = flipped.every((each, i) => each || expected[i] === 0) ? "every" : `the ${flipped.map((f, i) => (f ? names[i] ?? `#${i + 1}` : null)).filter(Boolean).join(" and ")}`;
-    return `yours is ours ${shown(expected)} with ${which === "every" ? "its sign" : `${which}'s sign`} flipped: a vector the other way round (P - Q for Q - P, -D for D)`;
+    if (flipped.every((each, i) => each || expected[i] === 0)) {
+      return `yours is ours ${shown(expected)} with its sign flipped: a vector the other way round (P - Q for Q - P, -D for D)`;
+    }
+    const which = flipped.map((f, i) => (f ? names[i] ?? `#${i + 1}` : null)).filter(Boolean).join(" and ");
+    return `yours is ours ${shown(expected)} with the ${which}'s sign flipped: one sign of a formula, or a matrix transposed`;
   }
   if (actual.length > 1 && expected.some((e) => e !== 0) && same(sorted(actual.map((a) => -a)), sorted(expected))) {
     return `yours is ours ${shown(expected)} with its sign flipped, in another order: a vector the other way round ` +
       "(P - Q for Q - P: CO = O - C, not C - O)";
   }
   const pairs = actual.map((a, i) => [a, expected[i]]).filter(([, e]) => Number.isFinite(e) && e !== 0);
-  if (pairs.length > 1 && actual.every((a, i) => pairs.some(([, e]) => e === expected[i]) || near(a, expected[i]))) {
+  // Two different values at least (a grey is a multiple of every other grey).
+  if (new Set(pairs.map(([, e]) => e)).size > 1 && actual.every((a, i) => pairs.some(([, e]) => e === expected[i]) || near(a, expected[i]))) {
     const factor = pairs[0][0] / pairs[0][1];
     if (Number.isFinite(factor) && Math.abs(factor - 1) > 1e-6 && factor !== 0 && pairs.every(([a, e]) => near(a, e * factor))) {
       const how = kind === "vector" ? ": a vector not normalised, or normalised where the book leaves it" :
