@@ -139,12 +139,17 @@ export function drawnPixels(calls, canvas) {
   return [...kept.values()].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
 }
 
+const PIXEL_LEVELS = 1;  // how far a drawn pixel's channel may be from ours
+
 // The lines that say which pixels differ; null when none do.
 function pixelDifferences(drawn, expected) {
   const key = ([x, y]) => `${x},${y}`;
   const yours = new Map(drawn.map((p) => [key(p), p]));
   const ours = new Map(expected.map((p) => [key(p), p]));
-  const same = (a, b) => a.slice(2).every((c, i) => c === b[i + 2]);
+  // A colour within one level of ours is ours: the same product computed in another
+  // order (d0 + (d1 - d0)(i - i0)/(i1 - i0) for d0 + a(i - i0)) may round the other way
+  // at an exact half.
+  const same = (a, b) => a.slice(2).every((c, i) => Math.abs(c - b[i + 2]) <= PIXEL_LEVELS);
   const lines = [];
   for (const [what, pixels] of [
     ["missing", [...ours.values()].filter((p) => !yours.has(key(p)))],

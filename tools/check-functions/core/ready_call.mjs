@@ -61,9 +61,10 @@ export function readyCall(language, file, signature, kase, drawing) {
     format(from ? from.map((each) => call[each]) : call[parameter], kind));
   if (language === "python") {
     const module = file.replace(/\.py$/, "");
-    if (!/^[A-Za-z_]\w*$/.test(module)) return [];
+    if (!/^[\w.-]+$/.test(module)) return [];
+    const load = /^[A-Za-z_]\w*$/.test(module) ? `import ${module} as m` : `m = __import__(${JSON.stringify(module)})`;
     const lines = ["from collections import namedtuple; from types import SimpleNamespace as R",
-      'V = namedtuple("V", "x y z"); P = namedtuple("P", "x y h", defaults=(1.0,))', `import ${module} as m`];
+      'V = namedtuple("V", "x y z"); P = namedtuple("P", "x y h", defaults=(1.0,))', load];
     const numbers = [];
     for (const [setting, value, kind] of settings(given)) {
       if (kind === "PutPixel") continue;
