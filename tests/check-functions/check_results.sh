@@ -58,10 +58,12 @@ for language in "${languages[@]}"; do
   if [ "$language" = py ]; then
     base=$reference/python/basic_rays.py file=$work/py/raytracer.py
     # y scaled by the width, and a print in CanvasToViewport
-    sed -e 's|y \* Vh / Ch|y * Vh / Cw|' -e 's|^def CanvasToViewport(x, y):|&\n    print("canvas point", x, y)|' "$base" >"$file"
+    sed -e 's|y \* Vh / Ch|y * Vh / Cw|' -e 's|^def CanvasToViewport(x, y):|&\n    print("canvas point", x, y)|' \
+      -e '1a print("loading the chapter")' "$base" >"$file"
   else
     base=$reference/js/basic-rays.js file=$work/js/raytracer.js
-    sed -e 's|y \* Vh / Ch|y * Vh / Cw|' -e 's|^function CanvasToViewport(x, y) {|&\n  console.log("canvas point", x, y);|' "$base" >"$file"
+    sed -e 's|y \* Vh / Ch|y * Vh / Cw|' -e 's|^function CanvasToViewport(x, y) {|&\n  console.log("canvas point", x, y);|' \
+      -e '1a console.log("loading the chapter");' "$base" >"$file"
   fi
   echo "== $language: complete"
   run 02 "$base" --json "$work/complete.json"
@@ -76,6 +78,7 @@ for language in "${languages[@]}"; do
   check "$language: (its last line)" says "^chapter: incomplete \(19 cases: 18 passed, 1 failed\)$"
   check "$language: what the code printed in that case, under it" says "^      \| canvas point 300 -200$"
   check "$language: only that case's printing" bash -c '[ "$(grep -c "| canvas point" "$1")" -eq 1 ]' _ "$work/out.txt"
+  check "$language: not what the file printed as it loaded" bash -c '! grep -q "| loading the chapter" "$1"' _ "$work/out.txt"
   check "$language: its results.json is valid" valid "$work/incomplete.json"
   check "$language: the failed test keeps what was printed, marked as the student's" \
     test "$(field "$work/incomplete.json" 'r.tests.filter((t) => t.status === "failed").map((t) => [t.extra_data.case, t.extra_data.status, t.extra_data.printed.trim(), t.extra_data.printed_by].join("|")).join(",")')" = \

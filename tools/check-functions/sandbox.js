@@ -100,7 +100,7 @@ function interpreterFiles(language, modulePaths) {
 // the repository is hidden from them all the same).
 function interpreterSearched(language, modulePaths) {
   const searched = language === "python" ? pythonInterpreter()?.searched ?? [] : modulePaths.map(real);
-  return searched.filter((dir) => dir && !system(dir) && !inside(dir, REPO));
+  return searched.filter((dir) => dir && !system(dir));
 }
 
 // Every copy of the case files in the folders bound in, found by a walk of at most
@@ -243,11 +243,9 @@ function located(program) {
 // the limits on the whole run, `seconds` of CPU time. bwrap's own arguments go through
 // a pipe (`argsText`, for file descriptor 5), so that /proc shows none of them (only the
 // runner's command, which bwrap must see on its own command line); its environment is
-// empty. `cut`: the search for copies of the case files stopped at its
-// bound.
+// empty. `cut`: the search for copies of the case files stopped at its bound.
 function sandboxed(command, { language, folders, seconds, modulePaths = [] }) {
-  const own = [...new Set(interpreterFiles(language, modulePaths).map((file) => real(file) && file))]
-    .filter((file) => file && !system(real(file)));
+  const own = [...new Set(interpreterFiles(language, modulePaths))].filter((file) => real(file) && !system(real(file)));
   const bound = [...new Set([...folders, ...own.map(real)])];
   const hiding = hidingMounts(bound.filter((file) => fs.statSync(file).isDirectory()),
     [...new Set([...folders, ...interpreterSearched(language, modulePaths)])]);

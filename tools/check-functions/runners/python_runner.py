@@ -980,6 +980,11 @@ def in_child(request, chapter, write_end):
 def capture_printing():
     """What the case prints (print, sys.stderr, a C library's or a child's output), kept
     in a file in memory in place of the standard output and error; its descriptor."""
+    for stream in (sys.stdout, sys.stderr):  # what the module printed as it loaded is not this case's
+        try:
+            stream.flush()
+        except Exception:
+            pass
     try:
         kept = os.memfd_create("printed")
     except (AttributeError, OSError):
