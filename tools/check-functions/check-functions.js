@@ -143,7 +143,9 @@ function command(options, seconds) {
   if (sandbox.why()) return run;
   const folders = [...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(file)))];
   const modulePaths = options.language === "python" ? [] : run.env.NODE_PATH.split(path.delimiter);
-  return sandbox.sandboxed(run, { language: options.language, folders, seconds, modulePaths });
+  const sandboxedRun = sandbox.sandboxed(run, { language: options.language, folders, seconds, modulePaths });
+  if (sandboxedRun.refused) throw new Usage(sandboxedRun.refused);
+  return sandboxedRun;
 }
 
 // The student's code in a process of its own, spoken to through two pipes (its file
@@ -153,6 +155,7 @@ class ProcessRunner {
   constructor(options, totalCases) {
     Object.assign(this, { options, language: options.language, process: null, id: 0 });
     this.started = Date.now();
+    this.sandboxes = new Set();  // the first process of every sandbox started (its PID outside)
     this.bound = (totalCases * options.timeLimit + options.loadLimit) * 1000;
     this.totalCases = totalCases;
   }
@@ -160,17 +163,26 @@ class ProcessRunner {
   start() {
     const { file, args, env, argsText, cut } = command(this.options, this.bound / 1000 + this.options.loadLimit);
     this.searchCut ||= Boolean(cut);
-    // In the sandbox, an empty environment and bwrap's arguments through a pipe (fd 5).
+    // In the sandbox, an empty environment, bwrap's arguments through a pipe (fd 5), and
+    // the sandbox's first process said on fd 6.
+    const sandboxPipes = argsText === undefined ? [] : ["pipe", "pipe"];
     const child = spawn(file, args, {
       cwd: path.dirname(this.options.module), detached: true,
-      stdio: ["ignore", "ignore", "ignore", "pipe", "pipe", ...(argsText === undefined ? [] : ["pipe"])],
+      stdio: ["ignore", "ignore", "ignore", "pipe", "pipe", ...sandboxPipes],
       env: argsText === undefined ? { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env } : env,
     });
+    this.process = { child, buffer: "", lines: [], waiting: null, ended: null };
     if (argsText !== undefined) {
       child.stdio[5].on("error", () => {});
       child.stdio[5].end(argsText);
+      let info = "";
+      child.stdio[6].setEncoding("utf8");
+      child.stdio[6].on("data", (chunk) => {
+        info += chunk;
+        const pid = /"child-pid"\s*:\s*(\d+)/.exec(info)?.[1];
+        if (pid) this.sandboxes.add(Number(pid));
+      });
     }
-    this.process = { child, buffer: "", lines: [], waiting: null, ended: null };
     const state = this.process;
     const wake = () => { const w = state.waiting; state.waiting = null; if (w) w(); };
     child.stdio[4].setEncoding("utf8");
@@ -231,6 +243,24 @@ class ProcessRunner {
     this.process.child.stdio[3].destroy();
     this.process.child.stdio[4].destroy();
     this.process = null;
+  }
+
+  // Resolves when every sandbox started is gone (its first process has ended, and the
+  // kernel ends the rest of its PID namespace with it; a zombie holds nothing), its
+  // cgroup empty and removed, or after 10 s.
+  async gone() {
+    const deadline = Date.now() + 10000;
+    const running = (pid) => {
+      try {
+        return !/^\d+ \(.*\) Z /s.test(fs.readFileSync(`/proc/${pid}/stat`, "utf8"));
+      } catch {
+        return false;
+      }
+    };
+    for (const pid of this.sandboxes) {
+      while (running(pid) && Date.now() < deadline) await new Promise((resolve) => setTimeout(resolve, 10));
+    }
+    await sandbox.removeCgroup();
   }
 
   async load(functions, names) {
@@ -385,6 +415,8 @@ async function main(argv) {
     if (unsandboxed) {
       lines.unshift(`note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`);
     }
+    const limitsNote = sandbox.limitsNote();
+    if (limitsNote) lines.unshift(`note: ${limitsNote} (docs/students.md, "Where your code runs")`);
     if (options.json !== "-") process.stdout.write(`${lines.join("\n")}\n`);
     if (options.json !== undefined) {
       const { gradescopeResults } = await import("./core/results.mjs");
@@ -395,6 +427,7 @@ async function main(argv) {
     return EXIT[result.verdict];
   } finally {
     runner.stop();
+    await runner.gone();
   }
 }
 

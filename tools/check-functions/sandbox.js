@@ -7,9 +7,15 @@
 // path is resolved to its real path before it is compared, hidden or bound. Its own PID
 // namespace (it can neither signal the checker nor outlive it: it ends with it), its own
 // session (it cannot write to the checker's terminal), an environment of four names, no
-// word of the checker's command line (bwrap reads its arguments from a pipe), and capped
-// memory, CPU time and number of processes. Where bwrap cannot run, `why()` says why, in
-// words for the report's first line, and the code runs as the user.
+// word of the checker's command line (bwrap reads its arguments from a pipe). Bounded as
+// a whole: its memory (files in its /tmp included) and its processes and threads together
+// in a cgroup of its own where the system lets the checker make one (cgroup v1's memory
+// and pids controllers, or v2's), each process alone otherwise (prlimit, said in a note);
+// only its /tmp and /dev/shm writable, each a tmpfs of a stated size; no file larger than
+// FILE_BYTES; CPU time. Run as root, the code runs as nobody without capabilities (in a
+// user namespace; and as nobody outside too where there is no cgroup, since the kernel
+// does not count root's processes). Where bwrap cannot run, `why()` says why, in words for
+// the report's first line, and the code runs as the user.
 "use strict";
 
 const { execFileSync, spawnSync } = require("child_process");
@@ -19,8 +25,14 @@ const path = require("path");
 const REPO = fs.realpathSync(path.resolve(__dirname, "..", ".."));
 const CASES = path.join(REPO, "tests", "cases");
 const RUNNERS = path.join(__dirname, "runners");
-const MEMORY = 3 << 30;  // bytes of data a process may have (RLIMIT_DATA): a memory bomb ends in seconds
-const PROCESSES = 256;  // processes the sandbox may add to the user's
+const MEMORY = 3 * 2 ** 30;  // bytes the sandbox may hold (its cgroup; else each process's RLIMIT_DATA): a memory bomb ends in seconds
+const PROCESSES = 256;  // processes the sandbox may add to the user's, where there is no cgroup
+const TASKS = 128;  // processes and threads of the sandbox together, in its cgroup (Node starts about 12)
+const TMP_BYTES = 64 << 20;  // the private /tmp (the Python runner keeps each case's printing there)
+const SHM_BYTES = 16 << 20;  // the private /dev/shm
+const FILE_BYTES = 64 << 20;  // the largest file the code may write (RLIMIT_FSIZE)
+const NOBODY = "65534";  // run as root, the code runs as this user and group (Debian's nobody)
+const isRoot = () => process.getuid?.() === 0;
 const SCAN_LIMIT = 200000;  // entries of the bound folders searched for copies of the case files
 const SYSTEM = ["/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"];
 
@@ -36,6 +48,127 @@ function why() {
   else if (probe.status !== 0) checked = "bwrap cannot make a sandbox here (are user namespaces turned off?)";
   else checked = "";
   return checked || null;
+}
+
+// The cgroup the sandbox runs in: { folders, procs, note }, made once a run in the
+// checker's own cgroup (v1: one folder in each of the memory and pids hierarchies; v2:
+// one folder with both controllers), with the sandbox's memory and tasks capped; or
+// { folders: [], note } when none can be made here (a cgroup file system read-only, as
+// in most containers; v2 without the controllers delegated), `note` saying so.
+let cgroup = null;
+
+function writeTo(file, text) {
+  fs.writeFileSync(file, text);
+}
+
+function makeCgroup() {
+  if (process.env.CGFS_NO_CGROUP === "1") return { folders: [], note: "CGFS_NO_CGROUP=1: the sandbox's memory and processes are capped for each process, not together" };
+  const name = `cgfs-check-${process.pid}`;
+  const lines = fs.readFileSync("/proc/self/cgroup", "utf8").trim().split("\n").map((line) => line.split(":"));
+  const v1 = (controller) => lines.find(([, list]) => list.split(",").includes(controller))?.[2];
+  const made = [];
+  try {
+    if (v1("memory") !== undefined && v1("pids") !== undefined) {
+      for (const [controller, file, value] of [["memory", "memory.limit_in_bytes", MEMORY], ["pids", "pids.max", TASKS]]) {
+        const folder = path.join("/sys/fs/cgroup", controller, v1(controller), name);
+        fs.mkdirSync(folder);
+        made.push(folder);
+        writeTo(path.join(folder, file), `${value}`);
+      }
+    } else {
+      const own = lines.find(([id]) => id === "0")?.[2];
+      if (own === undefined) throw new Error("no cgroup v2");
+      const folder = path.join("/sys/fs/cgroup", own, name);
+      fs.mkdirSync(folder);
+      made.push(folder);
+      const controllers = fs.readFileSync(path.join(folder, "cgroup.controllers"), "utf8").split(/\s+/);
+      if (!controllers.includes("memory") || !controllers.includes("pids")) throw new Error("controllers not delegated");
+      writeTo(path.join(folder, "memory.max"), `${MEMORY}`);
+      writeTo(path.join(folder, "pids.max"), `${TASKS}`);
+      try {
+        writeTo(path.join(folder, "memory.swap.max"), "0");
+      } catch {
+        // no swap accounting: the memory cap holds all the same
+      }
+    }
+    return { folders: made, note: null };
+  } catch {
+    for (const folder of made.reverse()) {
+      try {
+        fs.rmdirSync(folder);
+      } catch {
+        // left for the system
+      }
+    }
+    return { folders: [], note: "no cgroup can be made here: the sandbox's memory and processes are capped for each process, not together" };
+  }
+}
+
+function sandboxCgroup() {
+  cgroup ??= makeCgroup();
+  return cgroup;
+}
+
+// The PIDs in the sandbox's cgroup now (none where there is no cgroup).
+function cgroupProcesses() {
+  const pids = new Set();
+  for (const folder of cgroup?.folders ?? []) {
+    try {
+      for (const pid of fs.readFileSync(path.join(folder, "cgroup.procs"), "utf8").split(/\s+/)) if (pid) pids.add(Number(pid));
+    } catch {
+      // gone
+    }
+  }
+  return [...pids];
+}
+
+// Ends every process in the sandbox's cgroup, waits until there is none (at most 10 s),
+// and removes the cgroup.
+async function removeCgroup() {
+  if (!cgroup) return;
+  const deadline = Date.now() + 10000;
+  for (;;) {
+    const pids = cgroupProcesses();
+    if (pids.length === 0 || Date.now() > deadline) break;
+    for (const pid of pids) {
+      try {
+        process.kill(pid, "SIGKILL");
+      } catch {
+        // gone
+      }
+    }
+    await new Promise((resolve) => setTimeout(resolve, 10));
+  }
+  for (const folder of cgroup.folders) {
+    try {
+      fs.rmdirSync(folder);
+    } catch {
+      // still busy: left for the system
+    }
+  }
+  cgroup = null;
+}
+
+// Whether a user other than the owner can reach `file` (every folder above it searchable
+// by others, the file readable by others): nobody can bind it.
+function othersCanRead(file) {
+  for (let at = file; ; at = path.dirname(at)) {
+    let mode;
+    try {
+      mode = fs.statSync(at).mode;
+    } catch {
+      return false;
+    }
+    const needed = at === file && !fs.statSync(at).isDirectory() ? 0o004 : 0o001;
+    if ((mode & needed) === 0) return false;
+    if (at === "/") return true;
+  }
+}
+
+// A note's words where the sandbox is not bounded as a whole, else null.
+function limitsNote() {
+  if (why()) return null;
+  return sandboxCgroup().note;
 }
 
 const real = (file) => {
@@ -184,7 +317,10 @@ function hidingMounts(folders, searched) {
   }
   for (const file of copies.files) args.push("--ro-bind", "/dev/null", file);
   if (folders.some((folder) => inside(CASES, folder) || inside(folder, CASES))) args.push("--tmpfs", CASES);
-  return { args, cut: copies.cut };
+  // The hiding folders stay empty (a tmpfs the code could fill has no size): made
+  // read-only once every mount is made (the runners' may be inside one).
+  const readOnly = args.flatMap((word, at) => (word === "--tmpfs" ? ["--remount-ro", args[at + 1]] : []));
+  return { args, readOnly, cut: copies.cut };
 }
 
 function systemMounts() {
@@ -243,7 +379,9 @@ function located(program) {
 // the limits on the whole run, `seconds` of CPU time. bwrap's own arguments go through
 // a pipe (`argsText`, for file descriptor 5), so that /proc shows none of them (only the
 // runner's command, which bwrap must see on its own command line); its environment is
-// empty. `cut`: the search for copies of the case files stopped at its bound.
+// empty; it says the sandbox's first process on file descriptor 6 (`{"child-pid": N}`).
+// The command enters the sandbox's cgroup (a shell's `echo $$`) before anything else runs.
+// `cut`: the search for copies of the case files stopped at its bound.
 function sandboxed(command, { language, folders, seconds, modulePaths = [] }) {
   const own = [...new Set(interpreterFiles(language, modulePaths))].filter((file) => real(file) && !system(real(file)));
   const bound = [...new Set([...folders, ...own.map(real)])];
@@ -251,20 +389,35 @@ function sandboxed(command, { language, folders, seconds, modulePaths = [] }) {
     [...new Set([...folders, ...interpreterSearched(language, modulePaths)])]);
   const env = Object.entries({ PATH: "/usr/local/bin:/usr/bin:/bin", HOME: "/tmp", LANG: "C.UTF-8", ...command.env })
     .flatMap(([name, value]) => ["--setenv", name, value]);
+  const group = sandboxCgroup();
   const bwrap = [
     "--unshare-all", "--die-with-parent", "--new-session", "--clearenv", ...env,
-    ...systemMounts(), "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp",
+    ...(isRoot() ? ["--unshare-user", "--uid", NOBODY, "--gid", NOBODY] : []),
+    ...systemMounts(), "--proc", "/proc", "--dev", "/dev",
+    "--size", `${TMP_BYTES}`, "--tmpfs", "/tmp", "--size", `${SHM_BYTES}`, "--tmpfs", "/dev/shm",
     ...own.flatMap((file) => ["--ro-bind", file, file]),
     ...folders.flatMap((dir) => ["--ro-bind", dir, dir]),
     ...hiding.args,
     "--ro-bind", RUNNERS, RUNNERS,
-    "--chdir", folders[0],
+    ...hiding.readOnly, "--remount-ro", "/dev", "--remount-ro", "/",
+    "--chdir", folders[0], "--info-fd", "6",
   ];
-  const limits = [`--data=${MEMORY}`, `--cpu=${Math.ceil(seconds)}`, `--nproc=${userProcesses() + PROCESSES}`];
+  const limits = [`--cpu=${Math.ceil(seconds)}`, `--fsize=${FILE_BYTES}`,
+    ...(group.folders.length ? [] : [`--data=${MEMORY}`, `--nproc=${userProcesses() + PROCESSES}`])];
+  // Root's processes are not counted against RLIMIT_NPROC: without a cgroup, root's
+  // sandbox runs as nobody outside as well.
+  const asNobody = isRoot() && group.folders.length === 0;
+  const unreadable = asNobody ? [...bound, RUNNERS].find((file) => !othersCanRead(file)) : undefined;
+  if (unreadable) {
+    return { refused: `run as root where no cgroup can be made, the checker runs your code as nobody (the kernel does not count root's processes), and nobody cannot read ${unreadable}: make it readable by others (chmod o+rX), or run the checker as a user` };
+  }
+  const nobody = asNobody ? [located("setpriv"), `--reuid=${NOBODY}`, `--regid=${NOBODY}`, "--clear-groups", "--"] : [];
+  const run = [located("prlimit"), ...limits, "--", ...nobody, located("bwrap"), "--args", "5", command.file, ...command.args];
+  const enter = group.folders.map((folder) => `echo $$ > ${path.join(folder, "cgroup.procs")} && `).join("");
   return {
-    file: located("prlimit"), args: [...limits, "--", located("bwrap"), "--args", "5", command.file, ...command.args], env: {},
+    file: "/bin/sh", args: ["-c", `${enter}exec /usr/bin/env -i "$@"`, "sh", ...run], env: {},
     argsText: bwrap.map((word) => `${word}\0`).join(""), cut: hiding.cut,
   };
 }
 
-module.exports = { why, sandboxed, pythonInterpreter, real };
+module.exports = { why, limitsNote, sandboxed, removeCgroup, pythonInterpreter, real };

@@ -17,6 +17,7 @@
 
 import fs from "node:fs";
 import Module, { createRequire } from "node:module";
+import net from "node:net";
 import path from "node:path";
 import readline from "node:readline";
 import { pathToFileURL } from "node:url";
@@ -149,7 +150,10 @@ function send(message) {
 }
 
 async function main() {
-  const lines = readline.createInterface({ input: fs.createReadStream(null, { fd: 3 }), crlfDelay: Infinity });
+  // The requests' pipe read by the event loop (a net.Socket), not by a thread of libuv's
+  // pool blocked in read(): Node.js joins that pool as it exits, so a chapter's
+  // process.exit() while it waits would hang until the checker's load limit.
+  const lines = readline.createInterface({ input: new net.Socket({ fd: 3, readable: true, writable: false }), crlfDelay: Infinity });
   const requests = lines[Symbol.asyncIterator]();
   const { load } = JSON.parse((await requests.next()).value);
   const chapter = new Chapter(load.module);

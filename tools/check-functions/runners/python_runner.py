@@ -28,6 +28,7 @@ import os
 import select
 import signal
 import sys
+import tempfile
 import textwrap
 import time
 import traceback
@@ -978,16 +979,18 @@ def in_child(request, chapter, write_end):
 
 
 def capture_printing():
-    """What the case prints (print, sys.stderr, a C library's or a child's output), kept
-    in a file in memory in place of the standard output and error; its descriptor."""
+    """What the case prints (print, sys.stderr, a C library's output), kept in a
+    temporary file (the sandbox's /tmp, a tmpfs of a stated size) in place of the standard
+    output and error; its descriptor."""
     for stream in (sys.stdout, sys.stderr):  # what the module printed as it loaded is not this case's
         try:
             stream.flush()
         except Exception:
             pass
     try:
-        kept = os.memfd_create("printed")
-    except (AttributeError, OSError):
+        kept, name = tempfile.mkstemp(prefix="printed-")
+        os.unlink(name)
+    except OSError:
         return None
     for fd in (1, 2):
         os.dup2(kept, fd)
