@@ -1,10 +1,12 @@
 #include "options.h"
 
+#include <algorithm>
 #include <array>
-#include <map>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "program/arguments.h"
 #include "program/error.h"
@@ -19,15 +21,18 @@ Vec3 BookCoordinates(const glm::dvec3& v) {
 
 // Every edge used once in each direction: a surface without holes, consistently wound.
 bool IsClosed(const Model& model) {
-  std::map<std::pair<int, int>, int> edges;  // (from, to) -> how many triangles go so
+  std::vector<std::pair<int, int>> edges;  // (from, to) of every triangle, sorted
+  edges.reserve(3 * model.triangles.size());
   for (const Triangle& triangle : model.triangles) {
     for (int k = 0; k < 3; ++k) {
-      ++edges[{triangle.v[k], triangle.v[(k + 1) % 3]}];
+      edges.emplace_back(triangle.v[k], triangle.v[(k + 1) % 3]);
     }
   }
-  for (const auto& [edge, count] : edges) {
-    const auto back = edges.find({edge.second, edge.first});
-    if (count != 1 || back == edges.end() || back->second != 1) {
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const bool again = e + 1 < edges.size() && edges[e + 1] == edges[e];
+    const std::pair<int, int> back(edges[e].second, edges[e].first);
+    if (again || !std::binary_search(edges.begin(), edges.end(), back)) {
       return false;
     }
   }

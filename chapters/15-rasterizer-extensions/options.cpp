@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -23,15 +26,18 @@ Vec3 BookCoordinates(const glm::dvec3& v) {
 
 // Every edge used once in each direction: a surface without holes, consistently wound.
 bool IsClosed(const Model& model) {
-  std::map<std::pair<int, int>, int> edges;  // (from, to) -> how many triangles go so
+  std::vector<std::pair<int, int>> edges;  // (from, to) of every triangle, sorted
+  edges.reserve(3 * model.triangles.size());
   for (const Triangle& triangle : model.triangles) {
     for (int k = 0; k < 3; ++k) {
-      ++edges[{triangle.v[k], triangle.v[(k + 1) % 3]}];
+      edges.emplace_back(triangle.v[k], triangle.v[(k + 1) % 3]);
     }
   }
-  for (const auto& [edge, count] : edges) {
-    const auto back = edges.find({edge.second, edge.first});
-    if (count != 1 || back == edges.end() || back->second != 1) {
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const bool again = e + 1 < edges.size() && edges[e + 1] == edges[e];
+    const std::pair<int, int> back(edges[e].second, edges[e].first);
+    if (again || !std::binary_search(edges.begin(), edges.end(), back)) {
       return false;
     }
   }
@@ -56,23 +62,60 @@ std::array<Vec3, 3> CornerNormals(const cgfs::ModelFile& file,
   return normals;
 }
 
-// Each material's texture (map_Kd) with its mip chain, or none where it has none or it
-// cannot be read (said in a warning).
+// One texture file as the model's materials share it: read once, by its real path.
+struct SharedTexture {
+  std::shared_ptr<const MipmappedTexture> texture;  // none: it could not be used
+  std::string why_not;                              // the warning's words, if so
+  std::string first_material;
+  std::size_t materials = 0;
+};
+
+// Each material's texture (map_Kd) with its mip chain, or none where it has none, it
+// cannot be read, or it would take the model's textures past kMaxModelTexels: said in
+// one warning for each such file, with how many materials name it.
 std::vector<std::shared_ptr<const MipmappedTexture>> MaterialTextures(const cgfs::ModelFile& file,
                                                                       const std::string& name) {
+  std::map<std::filesystem::path, SharedTexture> files;
+  std::vector<std::filesystem::path> order;  // the files in the order materials name them
+  std::size_t texels = 0;
   std::vector<std::shared_ptr<const MipmappedTexture>> textures;
   for (const cgfs::ModelFile::Material& material : file.materials) {
-    std::shared_ptr<const MipmappedTexture> texture;
-    if (!material.texture.empty()) {
+    if (material.texture.empty()) {
+      textures.emplace_back();
+      continue;
+    }
+    std::error_code not_there;
+    std::filesystem::path real = std::filesystem::weakly_canonical(material.texture, not_there);
+    auto [shared, first] = files.try_emplace(not_there ? material.texture : real);
+    if (first) {
+      order.push_back(shared->first);
+      shared->second.first_material = material.name;
       try {
-        texture =
-            std::make_shared<const MipmappedTexture>(BuildMipChain(LoadTexture(material.texture)));
+        Texture texture = LoadTexture(material.texture);
+        texels += texture.texels.size();
+        if (texels > kMaxModelTexels) {
+          shared->second.why_not = "'" + material.texture.string() +
+                                   "' would take the model's textures past " +
+                                   std::to_string(kMaxModelTexels) + " texels";
+        } else {
+          shared->second.texture =
+              std::make_shared<const MipmappedTexture>(BuildMipChain(std::move(texture)));
+        }
       } catch (const cgfs::Error& error) {
-        cgfs::Warn(name + ": material " + material.name + ": " + error.what() +
-                   "; drawn in its colour");
+        shared->second.why_not = error.what();
       }
     }
-    textures.push_back(texture);
+    ++shared->second.materials;
+    textures.push_back(shared->second.texture);
+  }
+  for (const std::filesystem::path& each : order) {
+    const SharedTexture& shared = files[each];
+    if (!shared.why_not.empty()) {
+      const std::string more =
+          shared.materials > 1 ? " (and " + std::to_string(shared.materials - 1) + " more)" : "";
+      cgfs::Warn(name + ": material " + shared.first_material + more + ": " + shared.why_not +
+                 "; drawn in its colour");
+    }
   }
   return textures;
 }
@@ -143,21 +186,41 @@ std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
                                 const std::vector<const MipmappedTexture*>& by_material,
                                 const MipmappedTexture* everywhere) {
   std::vector<Model> parts;  // in the order their textures first appear
+  std::map<const MipmappedTexture*, std::size_t> part_of;  // a texture -> its part
+  std::vector<std::vector<std::size_t>> triangles_of;      // a part -> its triangles
   for (std::size_t t = 0; t < model.triangles.size(); ++t) {
     const int material = file.faces[t].material;
     const MipmappedTexture* texture = everywhere != nullptr ? everywhere
                                       : material >= 0
                                           ? by_material[static_cast<std::size_t>(material)]
                                           : nullptr;
-    auto part = std::find_if(parts.begin(), parts.end(),
-                             [texture](const Model& each) { return each.texture == texture; });
-    if (part == parts.end()) {
-      Model painted = model;
-      painted.triangles.clear();
-      painted.texture = texture;
-      part = parts.insert(parts.end(), std::move(painted));
+    const auto [part, first] = part_of.try_emplace(texture, parts.size());
+    if (first) {
+      parts.push_back(Model{{}, {}, model.closed, model.specular, texture});
+      triangles_of.emplace_back();
     }
-    part->triangles.push_back(model.triangles[t]);
+    triangles_of[part->second].push_back(t);
+  }
+  // Each part keeps only the vertices its triangles use, numbered anew.
+  std::vector<int> own(model.vertices.size(), -1);  // a vertex of model's -> the part's
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    for (const std::size_t t : triangles_of[p]) {
+      Triangle triangle = model.triangles[t];
+      for (int& v : triangle.v) {
+        int& index = own[static_cast<std::size_t>(v)];
+        if (index < 0) {
+          index = static_cast<int>(parts[p].vertices.size());
+          parts[p].vertices.push_back(model.vertices[static_cast<std::size_t>(v)]);
+        }
+        v = index;
+      }
+      parts[p].triangles.push_back(triangle);
+    }
+    for (const std::size_t t : triangles_of[p]) {
+      for (const int v : model.triangles[t].v) {
+        own[static_cast<std::size_t>(v)] = -1;
+      }
+    }
   }
   return parts;
 }

@@ -55,6 +55,7 @@ Model ModelFromFile(const cgfs::ModelFile& file);
 
 // `model` split into one Model per texture: a triangle's texture is `everywhere` if
 // there is one, otherwise its material's, `by_material[material]` (none: its colour).
+// Each part keeps only the vertices its triangles use.
 std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
                                 const std::vector<const MipmappedTexture*>& by_material,
                                 const MipmappedTexture* everywhere);
@@ -62,6 +63,11 @@ std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
 // The largest texture accepted, a side: 2048 x 2048 texels of 24 bytes are 100 MB,
 // and their mip chain a third more.
 inline constexpr int kMaxTextureSide = 2048;
+
+// The texels of all a model's textures together (each file counted once, however many
+// materials name it): two of the largest, 270 MB with their mip chains. A texture past
+// it leaves its materials in their colours.
+inline constexpr std::size_t kMaxModelTexels = 2048 * 2048;
 
 // A PNG, JPEG or PPM file as a texture (cgfs::ReadImage). Throws cgfs::Error for a
 // file that is not such an image, or one larger than kMaxTextureSide a side (checked
