@@ -31,7 +31,11 @@ bool ParseArguments(CLI::App& app, int argc, const char* const* argv) {
 
 void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
                    const std::string& help, const std::string& type_name) {
-  app.add_option("--" + name, value, help)->type_name(type_name);
+  app.add_option("--" + name, value, help)
+      ->type_name(type_name)
+      ->check([](const std::string& text) -> std::string {
+        return text.empty() ? "an empty name: give a file" : "";
+      });
 }
 
 void AddListOption(CLI::App& app, const std::string& name, std::vector<std::string>& values,

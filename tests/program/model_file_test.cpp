@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "program/error.h"
 #include "program/model_file.h"
@@ -154,19 +155,85 @@ TEST_CASE("a model too large for the machine is refused from its text, before it
     corners += " " + std::to_string(k);
   }
   CHECK_THAT(Refusal(corners + "\n"), Catch::Contains("a polygon of 1025 corners (at most 1024)"));
-  // Four million and one triangles in 36 MB: refused by counting, not by parsing.
+  // 750 001 triangles in 6 MB: refused by counting, not by parsing.
   std::string many;
-  many.reserve(40u << 20);
+  many.reserve(8u << 20);
   for (std::size_t k = 0; k <= cgfs::kMaxModelTriangles; ++k) {
     many += "f 1 2 3\n";
   }
   CHECK_THAT(Refusal(Square(many)),
-             Catch::Contains("too large a model") && Catch::Contains("4000003 triangles"));
+             Catch::Contains("too large a model") && Catch::Contains("750003 triangles"));
+  std::string switches = "mtllib none.mtl\n";
+  for (std::size_t k = 0; k <= cgfs::kMaxMaterialSwitches; ++k) {
+    switches += k % 2 == 0 ? "usemtl a\nf 1 2 3\n" : "usemtl b\nf 1 2 3\n";
+  }
+  CHECK_THAT(Refusal(Square(switches)),
+             Catch::Contains("changes material 65537 times (usemtl; at most 65536)"));
   // A file larger than kMaxModelFileBytes, stated by its size: never read.
   const fs::path huge = ModelFolder() / "huge.obj";
   Written(huge, "");
   fs::resize_file(huge, std::uintmax_t{10} << 30);  // 10 GB, sparse
   CHECK_THROWS_WITH(ReadModelFile(huge), Catch::Contains("is too large: more than"));
+}
+
+TEST_CASE("an index past 2147483647 is refused, never wrapped to another vertex") {
+  CHECK_THAT(Refusal(Square("f 1 2 4294967299\n")),
+             Catch::Contains("line 7: '4294967299' has an index past 2147483647"));
+  CHECK_THAT(Refusal(Square("f 1 2 99999999999\n")), Catch::Contains("index past 2147483647"));
+  CHECK_THAT(Refusal(Square("f 1/2147483648 2 3\n")), Catch::Contains("index past 2147483647"));
+  CHECK_THAT(Refusal(Square("f 1 2 -2147483648\n")), Catch::Contains("index past 2147483647"));
+  CHECK_THAT(Refusal(Square("f 1 2 2147483647\n")),
+             Catch::Contains("a face refers to vertex 2147483647 of 4"));
+  CHECK_THAT(Refusal(Square("f 1 2 0000000000003\n")), Catch::Equals(""));  // leading zeros
+}
+
+TEST_CASE("what the chapters do not draw is not kept, and what is left out is said once") {
+  const fs::path folder = ModelFolder();
+  const ModelFile model = ReadModelFile(
+      Written(folder / "kinds.obj", Square("f 1\nf 1 2\nf\nl 1 2 3\np 1 2\nt a 8192/8192/8192\n"
+                                           "g a b c\no thing\ns 1\nvw 1 0 0.5\ncstype bezier\n")));
+  CHECK(model.faces.size() == 2);
+  CHECK(model.warnings == std::vector<std::string>{"3 faces of fewer than three corners left out"});
+
+  Written(folder / "look.mtl", "newmtl red\nKd 1 0 0\n");
+  std::string libraries = "mtllib look.mtl\nmtllib look.mtl\nmtllib ./look.mtl\n";
+  for (int k = 0; k < 16; ++k) {  // 18 libraries named: 2 past the bound
+    libraries += "mtllib other" + std::to_string(k) + ".mtl\n";
+  }
+  const ModelFile named = ReadModelFile(Written(folder / "named.obj", libraries + Square()));
+  CHECK(named.materials.size() == 1);  // look.mtl read once, whatever it is called
+  CHECK(std::count(named.warnings.begin(), named.warnings.end(),
+                   "1 line naming a material library already named left out (mtllib)") == 1);
+  CHECK(std::count(named.warnings.begin(), named.warnings.end(),
+                   "2 lines naming more than 16 material libraries left out (mtllib)") == 1);
+
+  std::string crowded;
+  for (std::size_t k = 0; k <= cgfs::kMaxMaterials; ++k) {
+    crowded += "newmtl m" + std::to_string(k) + "\n";
+  }
+  Written(folder / "crowded.mtl", crowded);
+  const ModelFile many =
+      ReadModelFile(Written(folder / "many.obj", "mtllib crowded.mtl\n" + Square()));
+  CHECK(many.materials.empty());
+  REQUIRE(many.warnings.size() == 1);
+  CHECK_THAT(many.warnings[0], Catch::Contains("would make 4097 materials (at most 4096)"));
+}
+
+TEST_CASE("coordinates near the largest double are a model; triangles piled up are refused") {
+  const ModelFile huge = ReadModelFile(
+      Written(ModelFolder() / "huge.obj", "v 0 0 0\nv 1e300 0 0\nv 0 1e300 0\nf 1 2 3\n"));
+  CHECK(huge.faces.size() == 1);
+  // A closed surface covers its outline a few times: the unit square's two triangles,
+  // their boxes each the square, 2 / (pi 0.5) = 1.27.
+  CHECK(ReadModelFile(Written(ModelFolder() / "square.obj", Square())).faces.size() == 2);
+  std::string piled = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int k = 0; k < 1571; ++k) {  // each box 1 / (pi 0.5) = 0.637 of the outline
+    piled += "f 1 2 3\n";
+  }
+  CHECK_THAT(Refusal(piled), Catch::Contains("their boxes cover the model's outline 1000 times "
+                                             "over (at most 1000; a frame would take minutes)"));
+  piled.resize(piled.size() - 16);  // 1569 of them: 998.8 times
+  CHECK_THAT(Refusal(piled), Catch::Equals(""));
 }
 
 TEST_CASE("a path that is not a regular file is refused in one line") {

@@ -10,7 +10,7 @@
 
 // The largest file the programs read (program/src/model_file.cpp): a larger one is not
 // even read into the page.
-const kMaxModelFileBytes = 256 * 1024 * 1024;
+const kMaxModelFileBytes = 128 * 1024 * 1024;
 
 const modelScripts = {};  // a site model's name -> the promise of its files
 
@@ -44,7 +44,7 @@ async function OwnModel(chosen) {
            `${chosen.length} files chosen are .obj files.`;
   }
   const large = chosen.find((file) => file.size > kMaxModelFileBytes);
-  if (large) return `${large.name} is ${Math.round(large.size / 2 ** 20)} MB, more than the 256 MB the programs read.`;
+  if (large) return `${large.name} is ${Math.round(large.size / 2 ** 20)} MB, more than the 128 MB the programs read.`;
   const files = await Promise.all(chosen.map(async (file) => ({ name: file.name, bytes: new Uint8Array(await file.arrayBuffer()) })));
   return { open: objs[0].name, files };
 }

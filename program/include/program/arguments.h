@@ -18,7 +18,7 @@ bool ParseArguments(CLI::App& app, int argc, const char* const* argv);
 
 // For a chapter's options.cpp, without including CLI11 (a large header that takes
 // seconds to compile): an option `--name VALUE` read into `value`, shown in the help
-// as `--name TYPE_NAME  help`.
+// as `--name TYPE_NAME  help`; an empty VALUE is refused (every such option names a file).
 void AddTextOption(CLI::App& app, const std::string& name, std::string& value,
                    const std::string& help, const std::string& type_name);
 
