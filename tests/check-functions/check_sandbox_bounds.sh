@@ -135,6 +135,18 @@ if [ "$(id -u)" = 0 ]; then
     bash -c '[ "$(wc -l <"$1")" = 1 ] && grep -q "nobody cannot read $2: make it readable by others" "$1"' _ "$work/out.txt" "$copy/private"
 fi
 
+# A chapter kept in / would have the whole file system for its folder: refused (run as
+# root, the only user who can put one there).
+if [ "$(id -u)" = 0 ]; then
+  at_root=/cgfs-sandbox-bounds-$$.py
+  cp "$copy/student/probe.py" "$at_root"
+  status=0
+  node "$checker" 02 "$at_root" >"$work/out.txt" 2>&1 || status=$?
+  rm -f "$at_root"
+  sed 's/^/    /' "$work/out.txt"
+  check "a chapter in /: exit 2, one line" bash -c '[ "$1" = 2 ] && [ "$(wc -l <"$2")" = 1 ] && grep -q "put your chapter in a folder of its own" "$2"' _ "$status" "$work/out.txt"
+fi
+
 # A JavaScript module that ends its process as it loads is seen at once.
 printf 'process.exit(0);\nfunction CanvasToViewport(x, y) { return [x, y, 1]; }\n' >"$work/student/exits.js"
 status=0

@@ -117,6 +117,10 @@ function parse(argv) {
   if (options.adapter && languageOf(options.adapter) !== options.language) {
     throw new Usage(`${options.adapter}: an adapter is in your chapter's language (${options.language})`);
   }
+  // The sandbox gives the code its own folder: the root folder would be the whole system.
+  for (const file of [options.module, options.adapter].filter(Boolean)) {
+    if (path.dirname(file) === "/") throw new Usage(`${file}: put your chapter in a folder of its own (its folder, /, would give your code the whole file system)`);
+  }
   return options;
 }
 
