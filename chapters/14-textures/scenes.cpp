@@ -150,17 +150,21 @@ Scene SceneMinifiedCheckerboard() {
 }
 
 Scene SceneModel(const std::vector<Model>& parts) {
-  const Model& model = parts.front();  // every part has all the vertices
-  Vec3 low = model.vertices.front();
+  // The box and sphere around every part's vertices (each part has those it uses).
+  Vec3 low = parts.front().vertices.front();
   Vec3 high = low;
-  for (const Vec3& vertex : model.vertices) {
-    low = glm::min(low, vertex);
-    high = glm::max(high, vertex);
+  for (const Model& part : parts) {
+    for (const Vec3& vertex : part.vertices) {
+      low = glm::min(low, vertex);
+      high = glm::max(high, vertex);
+    }
   }
   const Vec3 centre = (low + high) / 2.0;
   double radius = 0;
-  for (const Vec3& vertex : model.vertices) {
-    radius = std::max(radius, glm::length(vertex - centre));
+  for (const Model& part : parts) {
+    for (const Vec3& vertex : part.vertices) {
+      radius = std::max(radius, glm::length(vertex - centre));
+    }
   }
   Scene scene;
   scene.lights = ShadingLights();

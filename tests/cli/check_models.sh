@@ -39,7 +39,7 @@ cases=(
   "fifo.obj|not a regular file"
   "/dev/zero|not a regular file"
   "loop.obj|cannot read"
-  "huge.obj|is too large: more than 268435456 bytes"
+  "huge.obj|is too large: more than 134217728 bytes"
   "png.obj|a control character"
   "utf16.obj|a NUL byte: not a text OBJ file (UTF-16 is not read)"
   "out-of-range.obj|a face refers to vertex 9 of 4"
