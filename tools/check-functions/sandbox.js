@@ -75,6 +75,11 @@ function makeCgroup() {
         made.push(folder);
         writeTo(path.join(folder, file), `${value}`);
       }
+      try {  // no swap beyond the cap, where the kernel accounts for swap
+        writeTo(path.join(made[0], "memory.memsw.limit_in_bytes"), `${MEMORY}`);
+      } catch {
+        // no swap accounting: the memory cap holds all the same
+      }
     } else {
       const own = lines.find(([id]) => id === "0")?.[2];
       if (own === undefined) throw new Error("no cgroup v2");
