@@ -2,8 +2,8 @@
 
 #include "parallel.h"
 
-std::vector<long> CountedPerPixel(const cgfs::Counter& counter, const Canvas& canvas,
-                                  const std::function<void()>& draw) {
+std::vector<cgfs::Count> CountedPerPixel(const cgfs::Counter& counter, const Canvas& canvas,
+                                         const std::function<void()>& draw) {
   const cgfs::Tallying tallying(counter, canvas.Width(), canvas.Height());
   draw();
   return tallying.PerPixel();
@@ -18,8 +18,8 @@ TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
   const std::size_t pixels =
       static_cast<std::size_t>(canvas.Width()) * static_cast<std::size_t>(canvas.Height());
   if (prepared.bvh == nullptr) {
-    return {std::vector<long>(pixels, 0),
-            std::vector<long>(pixels, static_cast<long>(prepared.objects.size()))};
+    return {std::vector<cgfs::Count>(pixels, 0),
+            std::vector<cgfs::Count>(pixels, static_cast<cgfs::Count>(prepared.objects.size()))};
   }
   const auto search = [&] {
     ForEachPixel(canvas, optimizations.threads, [&](int x, int y) {
@@ -31,8 +31,8 @@ TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
           CountedPerPixel(kObjectTests, canvas, search)};
 }
 
-std::vector<long> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
-                             const Optimizations& optimizations) {
+std::vector<cgfs::Count> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
+                                    const Optimizations& optimizations) {
   Canvas drawn(canvas.Width(), canvas.Height());
   return CountedPerPixel(kTracedRays, canvas,
                          [&] { RenderScene(scene, recursion_depth, drawn, optimizations); });

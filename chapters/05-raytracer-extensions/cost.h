@@ -13,16 +13,16 @@
 #include "raytracer.h"
 
 // Each pixel's count of `counter` while `draw` draws on a canvas of `canvas`'s size.
-std::vector<long> CountedPerPixel(const cgfs::Counter& counter, const Canvas& canvas,
-                                  const std::function<void()>& draw);
+std::vector<cgfs::Count> CountedPerPixel(const cgfs::Counter& counter, const Canvas& canvas,
+                                         const std::function<void()>& draw);
 
 // "Hierarchical Structures", counted: the box tests and the object tests the search
 // for the closest hit makes for each pixel's camera ray (ClosestIntersection's
 // search, with t from 1: through the hierarchy when `optimizations` ask for it and the
 // scene needs one, else one test per object).
 struct TestsPerPixel {
-  std::vector<long> boxes;
-  std::vector<long> objects;
+  std::vector<cgfs::Count> boxes;
+  std::vector<cgfs::Count> objects;
 };
 TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
                               const Optimizations& optimizations);
@@ -30,5 +30,5 @@ TestsPerPixel PrimaryRayTests(const Scene& scene, const Canvas& canvas,
 // "Reflections", "Transparency" and "Refraction", counted: the rays TraceRay traces for
 // each pixel (kTracedRays), its camera ray and every reflected and refracted ray it
 // spawns, with reflections `recursion_depth` deep.
-std::vector<long> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
-                             const Optimizations& optimizations);
+std::vector<cgfs::Count> TracedRays(const Scene& scene, int recursion_depth, const Canvas& canvas,
+                                    const Optimizations& optimizations);

@@ -29,8 +29,8 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
 // neighbour's by more than kAdaptiveThreshold in a channel. Returns how many pixels
 // were subdivided.
 inline constexpr double kAdaptiveThreshold = 24;
-long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
-                         const Optimizations& optimizations);
+cgfs::Count RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
+                                const Optimizations& optimizations);
 
 // The camera rays these functions search the whole scene with, counted (a cost view,
 // cost.h): subsampling's traced pixels and those whose neighbours disagree, each

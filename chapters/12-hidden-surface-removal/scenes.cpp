@@ -227,10 +227,10 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
 // to `scale_max` (program/cost_view.h); the cost view of the figure named `figure`.
 cgfs::Figure OverdrawFigure(const std::string& figure, const std::string& caption,
                             std::function<Scene()> scene, const HiddenSurfaceRemoval& method,
-                            long scale_max) {
+                            cgfs::Count scale_max) {
   const cgfs::CostView cost;
   const auto draw = [method, scale_max, cost](const Scene& drawn, Canvas& canvas) {
-    std::vector<long> writes;
+    std::vector<cgfs::Count> writes;
     {
       const cgfs::Tallying tallying(cgfs::kPixelsPut, canvas.Width(), canvas.Height());
       RenderScene(drawn, canvas, method);
@@ -277,7 +277,7 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   const HiddenSurfaceRemoval culled{};
   const HiddenSurfaceRemoval outlines{.outlines = true};
   // One scale for the three overdraw views, so that they compare at a glance.
-  constexpr long kOverdrawScale = 5;
+  constexpr cgfs::Count kOverdrawScale = 5;
   std::vector<cgfs::Figure> figures = {
       SceneFigure("fig-12-1-model-order",
                   "Figure 10-10's cubes filled, in model order: back faces paint over front faces",

@@ -232,7 +232,7 @@ std::shared_ptr<const MipmappedTexture> LevelNumbers(const MipmappedTexture& lik
 
 // The mip level each pixel of `scene` reads with `shading`, -1 where no texture is
 // read: the scene drawn with its models' textures numbered (LevelNumbers), then read back.
-std::vector<long> MipLevelsRead(Scene scene, const Shading& shading, Canvas& canvas) {
+std::vector<cgfs::Count> MipLevelsRead(Scene scene, const Shading& shading, Canvas& canvas) {
   std::vector<std::shared_ptr<const MipmappedTexture>> textures;
   std::vector<std::shared_ptr<Model>> models;
   for (Instance& instance : scene.instances) {
@@ -246,7 +246,7 @@ std::vector<long> MipLevelsRead(Scene scene, const Shading& shading, Canvas& can
   }
   scene.lights = {{LightType::kAmbient, 1.0, {}, {}}};
   RenderScene(scene, canvas, shading);
-  std::vector<long> levels;
+  std::vector<cgfs::Count> levels;
   for (int row = 0; row < canvas.Height(); ++row) {
     for (int column = 0; column < canvas.Width(); ++column) {
       const cgfs::Rgb8 pixel = canvas.GetImage().At(column, row);
@@ -259,7 +259,8 @@ std::vector<long> MipLevelsRead(Scene scene, const Shading& shading, Canvas& can
 // The mip-level view of a scene drawn with `shading`: the level each pixel reads, on
 // the cost ramp from 0 to `scale_max` (program/cost_view.h).
 cgfs::Figure MipLevelFigure(const std::string& name, const std::string& caption,
-                            std::function<Scene()> scene, const Shading& shading, long scale_max) {
+                            std::function<Scene()> scene, const Shading& shading,
+                            cgfs::Count scale_max) {
   const cgfs::CostView cost;
   const auto draw = [shading, scale_max, cost](Scene drawn, Canvas& canvas) {
     cost.Draw(canvas, MipLevelsRead(std::move(drawn), shading, canvas), scale_max);

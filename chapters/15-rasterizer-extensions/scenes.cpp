@@ -377,14 +377,14 @@ std::vector<cgfs::Figure> NormalMapFigures() {
 }
 
 // The tops of the scales of the shadows' cost views: the most any pixel of them takes.
-constexpr long kStencilWritesScale = 20;
-constexpr long kPixelsPerEntryScale = 404;
+constexpr cgfs::Count kStencilWritesScale = 20;
+constexpr cgfs::Count kPixelsPerEntryScale = 404;
 
 // What `counter` tallies per pixel (from `initial`) while the scene is drawn with
 // `extensions` (cgfs/tally.h).
-std::vector<long> CountedWhileDrawing(const cgfs::Counter& counter, long initial,
-                                      const Scene& scene, Canvas& canvas,
-                                      const Extensions& extensions) {
+std::vector<cgfs::Count> CountedWhileDrawing(const cgfs::Counter& counter, cgfs::Count initial,
+                                             const Scene& scene, Canvas& canvas,
+                                             const Extensions& extensions) {
   const cgfs::Tallying tallying(counter, canvas.Width(), canvas.Height(), initial);
   RenderScene(scene, canvas, {}, extensions);
   return tallying.PerPixel();
@@ -402,7 +402,7 @@ std::vector<cgfs::Figure> ShadowCostFigures() {
   };
   const auto pixels_per_entry = [entries_view](const Scene& scene, Canvas& canvas) {
     const Extensions maps = With([](Extensions& e) { e.shadows = Shadows::kShadowMaps; });
-    const std::vector<long> entries =
+    const std::vector<cgfs::Count> entries =
         CountedWhileDrawing(kShadowMapEntries, -1, scene, canvas, maps);
     entries_view.Draw(canvas, PixelsSharingEntry(entries), kPixelsPerEntryScale);
   };
@@ -556,12 +556,12 @@ std::vector<cgfs::Figure> Figures(const ChapterSettings& settings) {
   return figures;
 }
 
-std::vector<long> PixelsSharingEntry(const std::vector<long>& entries) {
-  std::unordered_map<long, long> readers;
-  for (const long entry : entries) {
+std::vector<cgfs::Count> PixelsSharingEntry(const std::vector<cgfs::Count>& entries) {
+  std::unordered_map<cgfs::Count, cgfs::Count> readers;
+  for (const cgfs::Count entry : entries) {
     readers[entry] += entry >= 0 ? 1 : 0;
   }
-  std::vector<long> shared(entries.size(), -1);
+  std::vector<cgfs::Count> shared(entries.size(), -1);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     shared[i] = entries[i] >= 0 ? readers[entries[i]] : -1;
   }

@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "cgfs/tally.h"
 #include "clipping.h"
 #include "extensions.h"
 #include "options.h"
@@ -72,7 +73,7 @@ Scene SceneEverything(const Model& crate);
 
 // For the shadow map's cost view: given the entry each pixel reads (-1: none), how many
 // pixels read each pixel's entry (-1 where it reads none).
-std::vector<long> PixelsSharingEntry(const std::vector<long>& entries);
+std::vector<cgfs::Count> PixelsSharingEntry(const std::vector<cgfs::Count>& entries);
 
 // A model of the reader's own (--model) seen from a camera at the origin: scaled and
 // moved so that its bounding sphere has radius 1 and its centre 3 units ahead; each

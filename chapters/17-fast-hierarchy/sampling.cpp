@@ -123,8 +123,8 @@ void RenderSceneSupersampled(const Scene& scene, int recursion_depth, int n, Can
   });
 }
 
-long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
-                         const Optimizations& optimizations) {
+cgfs::Count RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas,
+                                const Optimizations& optimizations) {
   Scene prepared = scene;
   PrepareScene(prepared, optimizations);
   const int threads = prepared.optimizations.threads;
@@ -135,7 +135,7 @@ long RenderSceneAdaptive(const Scene& scene, int recursion_depth, Canvas& canvas
     samples(x, y) = sample;
   });
 
-  std::atomic<long> subdivided{0};
+  std::atomic<cgfs::Count> subdivided{0};
   ForEachPixel(canvas, threads, [&](int x, int y) {
     const Sample& here = samples(x, y);
     bool differs = false;

@@ -296,8 +296,8 @@ cgfs::Figure SceneFigure(const std::string& name, const std::string& caption,
 // with `scale_max` at its top (program/cost_view.h), its totals said after the caption.
 cgfs::Figure CostFigure(const std::string& name, const std::string& caption,
                         std::function<Scene()> make_scene,
-                        std::function<std::vector<long>(const Scene&, Canvas&)> count,
-                        long scale_max) {
+                        std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> count,
+                        cgfs::Count scale_max) {
   const cgfs::CostView cost;
   cgfs::Figure figure = SceneFigure(name, caption, std::move(make_scene),
                                     [cost, count, scale_max](const Scene& scene, Canvas& canvas) {
@@ -308,7 +308,8 @@ cgfs::Figure CostFigure(const std::string& name, const std::string& caption,
 }
 
 // The box and object tests of each pixel's camera ray, together.
-std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizations optimizations) {
+std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> TestsCounted(
+    Optimizations optimizations) {
   return [optimizations](const Scene& scene, Canvas& canvas) {
     TestsPerPixel tests = PrimaryRayTests(scene, canvas, optimizations);
     for (std::size_t i = 0; i < tests.boxes.size(); ++i) {
@@ -320,7 +321,7 @@ std::function<std::vector<long>(const Scene&, Canvas&)> TestsCounted(Optimizatio
 
 // What a main loop counts of `counter` per pixel while it draws; the picture it draws
 // is not kept.
-std::function<std::vector<long>(const Scene&, Canvas&)> CountedWhileDrawing(
+std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> CountedWhileDrawing(
     const cgfs::Counter& counter, std::function<void(const Scene&, Canvas&)> render) {
   return [&counter, render](const Scene& scene, Canvas& canvas) {
     Canvas drawn(canvas.Width(), canvas.Height());
@@ -329,8 +330,8 @@ std::function<std::vector<long>(const Scene&, Canvas&)> CountedWhileDrawing(
 }
 
 // The rays TraceRay traces per pixel, reflections `depth` deep.
-std::function<std::vector<long>(const Scene&, Canvas&)> TracedCounted(int depth,
-                                                                      Optimizations optimizations) {
+std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> TracedCounted(
+    int depth, Optimizations optimizations) {
   return [depth, optimizations](const Scene& scene, Canvas& canvas) {
     return TracedRays(scene, depth, canvas, optimizations);
   };
@@ -338,7 +339,7 @@ std::function<std::vector<long>(const Scene&, Canvas&)> TracedCounted(int depth,
 
 // The top of the scale of rays traced per pixel, shared by the three views: the most
 // any pixel of them takes (the lens's rim).
-constexpr long kRaysScale = 25;
+constexpr cgfs::Count kRaysScale = 25;
 
 // The cost views of the chapter's optimisations, each named after the figure it
 // explains.

@@ -16,7 +16,7 @@ void Add(const Counter& counter, int x, int y) {
   }
 }
 
-void AddAtCurrentPixel(const Counter& counter, long events) {
+void AddAtCurrentPixel(const Counter& counter, cgfs::Count events) {
   Tallying* tallying = active.load(std::memory_order_acquire);
   if (tallying == nullptr || tallying->counter_ != &counter) {
     return;
@@ -28,19 +28,19 @@ void AddAtCurrentPixel(const Counter& counter, long events) {
   }
 }
 
-void RecordAtCurrentPixel(const Counter& counter, long value) {
+void RecordAtCurrentPixel(const Counter& counter, cgfs::Count value) {
   Tallying* tallying = active.load(std::memory_order_acquire);
   if (tallying == nullptr || tallying->counter_ != &counter || !current_pixel.set) {
     return;
   }
-  if (long* cell = tallying->Cell(current_pixel.x, current_pixel.y)) {
+  if (cgfs::Count* cell = tallying->Cell(current_pixel.x, current_pixel.y)) {
     *cell = value;
   }
 }
 
 }  // namespace tally_internal
 
-Tallying::Tallying(const Counter& counter, int width, int height, long initial)
+Tallying::Tallying(const Counter& counter, int width, int height, cgfs::Count initial)
     : counter_(&counter),
       width_(width),
       height_(height),
@@ -55,12 +55,12 @@ Tallying::~Tallying() {
   tally_internal::active.store(nullptr);
 }
 
-long Tallying::Total() const {
-  return std::accumulate(counts_.begin(), counts_.end(), 0L) + elsewhere_.load();
+cgfs::Count Tallying::Total() const {
+  return std::accumulate(counts_.begin(), counts_.end(), cgfs::Count{0}) + elsewhere_.load();
 }
 
 // The canvas's mapping (Canvas::ToScreen): column Cw/2 + x, row Ch/2 - y - 1.
-long* Tallying::Cell(int x, int y) {
+cgfs::Count* Tallying::Cell(int x, int y) {
   const int column = width_ / 2 + x;
   const int row = height_ / 2 - y - 1;
   if (column < 0 || column >= width_ || row < 0 || row >= height_) {
@@ -70,8 +70,8 @@ long* Tallying::Cell(int x, int y) {
                   static_cast<std::size_t>(column)];
 }
 
-void Tallying::Add(int x, int y, long events) {
-  if (long* cell = Cell(x, y)) {
+void Tallying::Add(int x, int y, cgfs::Count events) {
+  if (cgfs::Count* cell = Cell(x, y)) {
     *cell += events;
   } else {
     elsewhere_.fetch_add(events, std::memory_order_relaxed);

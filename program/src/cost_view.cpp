@@ -36,7 +36,7 @@ int CostStripHeight(int canvas_height) {
 namespace {
 
 // The largest scale whose colours DrawCost works out in advance.
-constexpr long kLargestScale = 1 << 20;
+constexpr cgfs::Count kLargestScale = 1 << 20;
 
 void Put(Canvas& canvas, int column, int row, Rgb8 value) {
   canvas.PutPixel(column - canvas.Width() / 2, canvas.Height() / 2 - 1 - row,
@@ -45,9 +45,9 @@ void Put(Canvas& canvas, int column, int row, Rgb8 value) {
 
 // The count the strip shows at `column`: a whole one per block for a few steps, else
 // the ramp's own value there.
-Rgb8 StripColor(int column, int width, long scale_max) {
+Rgb8 StripColor(int column, int width, cgfs::Count scale_max) {
   if (scale_max <= kCostStepsMax) {
-    const long count = static_cast<long>(column) * (scale_max + 1) / width;
+    const cgfs::Count count = static_cast<cgfs::Count>(column) * (scale_max + 1) / width;
     return CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max)));
   }
   return CostRamp(width > 1 ? static_cast<double>(column) / (width - 1) : 1.0);
@@ -55,13 +55,13 @@ Rgb8 StripColor(int column, int width, long scale_max) {
 
 }  // namespace
 
-void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
+void DrawCost(Canvas& canvas, const std::vector<cgfs::Count>& counts, cgfs::Count scale_max) {
   const int width = canvas.Width(), height = canvas.Height();
   if (counts.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
     throw std::invalid_argument("DrawCost: one count per pixel is needed");
   }
   // Each count's colour worked out once (counts above the scale all get its top's).
-  const long top = std::max(scale_max, 0L);
+  const cgfs::Count top = std::max(scale_max, cgfs::Count{0});
   std::vector<Rgb8> colors(static_cast<std::size_t>(std::min(top, kLargestScale)) + 1);
   for (std::size_t count = 0; count < colors.size(); ++count) {
     colors[count] =
@@ -69,10 +69,10 @@ void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
   }
   for (int row = 0; row < height; ++row) {
     for (int column = 0; column < width; ++column) {
-      const long count = counts[static_cast<std::size_t>(row) * width + column];
+      const cgfs::Count count = counts[static_cast<std::size_t>(row) * width + column];
       Put(canvas, column, row,
           count < 0 ? kCostNothing
-          : count < static_cast<long>(colors.size())
+          : count < static_cast<cgfs::Count>(colors.size())
               ? colors[static_cast<std::size_t>(count)]
               : CostRamp(CostPosition(static_cast<double>(count), static_cast<double>(scale_max))));
     }
@@ -90,7 +90,7 @@ void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max) {
 namespace {
 
 // 1234567 as the captions write it: "1 234 567".
-std::string Spaced(long n) {
+std::string Spaced(cgfs::Count n) {
   const std::string digits = std::to_string(n < 0 ? -n : n);
   std::string spaced = n < 0 ? "-" : "";
   for (std::size_t i = 0; i < digits.size(); ++i) {
@@ -104,10 +104,10 @@ std::string Spaced(long n) {
 
 }  // namespace
 
-std::string CostTotals(const std::vector<long>& counts) {
-  long total = 0, largest = 0;
-  for (const long count : counts) {
-    total += std::max(count, 0L);
+std::string CostTotals(const std::vector<cgfs::Count>& counts) {
+  cgfs::Count total = 0, largest = 0;
+  for (const cgfs::Count count : counts) {
+    total += std::max(count, cgfs::Count{0});
     largest = std::max(largest, count);
   }
   return Spaced(total) + " in all, at most " + Spaced(largest);

@@ -57,7 +57,7 @@ TEST_CASE("through the hierarchy, the tests per camera ray are those of its own 
         cgfs::kInf, object);
     return tallying.Total();
   };
-  std::vector<long> boxes(600 * 600), objects(600 * 600), both(600 * 600);
+  std::vector<cgfs::Count> boxes(600 * 600), objects(600 * 600), both(600 * 600);
   for (int x = -300; x < 300; ++x) {
     for (int y = -300; y < 300; ++y) {
       const std::size_t pixel = static_cast<std::size_t>((299 - y) * 600 + (x + 300));
@@ -89,11 +89,11 @@ TEST_CASE("subsampling searches the scene for the even pixels and where neighbou
     const Vec3 D = CameraRayDirection(x, y, canvas, prepared);
     return ClosestIntersection(prepared.camera.position, D, 1, cgfs::kInf, prepared).object;
   };
-  std::vector<long> searches(600 * 600, 0);
+  std::vector<cgfs::Count> searches(600 * 600, 0);
   for (int x = -300; x < 300; ++x) {
     for (int y = -300; y < 300; ++y) {
       const int dx = (x + 300) % 2, dy = (y + 300) % 2;
-      long searched = 1;
+      cgfs::Count searched = 1;
       if (dx != 0 || dy != 0) {
         const int a = hit_at(x - dx, y - dy), b = hit_at(x + dx, y - dy),
                   c = hit_at(x - dx, y + dy), d = hit_at(x + dx, y + dy);
@@ -111,7 +111,7 @@ TEST_CASE("subsampling searches the scene for the even pixels and where neighbou
     }
   }
   Canvas image(600, 600);
-  const std::vector<long> counted = CountedPerPixel(
+  const std::vector<cgfs::Count> counted = CountedPerPixel(
       kCameraRays, image, [&] { RenderSceneSubsampled(scene, 0, image, AllOptimizations()); });
   CHECK(counted == searches);
   CHECK(Total(searches) >= 300 * 300);
@@ -120,8 +120,8 @@ TEST_CASE("subsampling searches the scene for the even pixels and where neighbou
 
 TEST_CASE("adaptive supersampling traces 1 ray, or 1 + 16 where it subdivides", "[cost]") {
   Canvas image(600, 600);
-  long subdivided = 0;
-  const std::vector<long> rays = CountedPerPixel(kCameraRays, image, [&] {
+  cgfs::Count subdivided = 0;
+  const std::vector<cgfs::Count> rays = CountedPerPixel(kCameraRays, image, [&] {
     subdivided = RenderSceneAdaptive(SceneCamera(), 3, image, AllOptimizations());
   });
   CHECK(Total(rays) == 600L * 600 + 16 * subdivided);
@@ -137,8 +137,8 @@ namespace {
 // hits a surface and bounces are left, one reflected ray if the surface reflects and
 // one sent through (bent, or mirrored back inside past the critical angle) if it is
 // transparent.
-long RaysOf(const Vec3& O, const Vec3& D, double t_min, int depth, const Scene& scene,
-            double medium) {
+cgfs::Count RaysOf(const Vec3& O, const Vec3& D, double t_min, int depth, const Scene& scene,
+                   double medium) {
   const Hit hit = ClosestIntersection(O, D, t_min, cgfs::kInf, scene);
   if (hit.primitive == nullptr) {
     return 1;
@@ -149,7 +149,7 @@ long RaysOf(const Vec3& O, const Vec3& D, double t_min, int depth, const Scene& 
   }
   const Vec3 P = O + hit.t * D;
   const Vec3 N = hit.flip_normal ? -hit.primitive->Normal(P) : hit.primitive->Normal(P);
-  long rays = 1;
+  cgfs::Count rays = 1;
   if (surface.reflective > 0) {
     rays += RaysOf(P, ReflectRay(-D, N), scene.epsilon, depth - 1, scene, medium);
   }
@@ -177,10 +177,11 @@ TEST_CASE("the rays traced per pixel are the rays the book's rules spawn", "[cos
   const Canvas canvas(600, 600);
   for (const auto& view : views) {
     INFO(view.figure);
-    const std::vector<long> rays = TracedRays(view.scene(), view.depth, canvas, Optimizations{});
+    const std::vector<cgfs::Count> rays =
+        TracedRays(view.scene(), view.depth, canvas, Optimizations{});
     Scene scene = view.scene();
     PrepareScene(scene, Optimizations{});
-    long wrong = 0;
+    cgfs::Count wrong = 0;
     for (int x = -300; x < 300; x += 3) {
       for (int y = -300; y < 300; y += 3) {
         const Vec3 D = CameraRayDirection(x, y, canvas, scene);

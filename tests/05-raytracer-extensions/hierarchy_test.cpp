@@ -70,7 +70,7 @@ TEST_CASE("Bvh: grazing rays hit what the loop over every object hits", "[optimi
     const int rays = 20000;
     const auto [scene, with_bvh] = WithoutAndWithBvh(each);
     Random random(3);
-    long hits = 0;
+    cgfs::Count hits = 0;
     for (int i = 0; i < rays; ++i) {
       const Object& object = *scene.objects[static_cast<std::size_t>(
           random.Next() * static_cast<double>(scene.objects.size()))];
@@ -205,10 +205,10 @@ class GridSearch {
         step = std::min(step, 0.5 * cell_[axis] / std::abs(D[axis]));
       }
     }
-    long last = -1;
+    cgfs::Count last = -1;
     for (double t = enter;; t = std::min(t + step, leave)) {
       const glm::ivec3 cell = glm::clamp(CellOf(O + t * D), glm::ivec3(0), glm::ivec3(res_ - 1));
-      const long index = static_cast<long>(Index(cell));
+      const cgfs::Count index = static_cast<cgfs::Count>(Index(cell));
       if (index != last) {
         for (const int i : cells_[index]) {
           test(i);
@@ -237,8 +237,8 @@ class GridSearch {
   Vec3 min_{0, 0, 0};
   Vec3 cell_{1, 1, 1};
   std::vector<std::vector<int>> cells_;
-  std::vector<long> tested_;  // the last ray that tested each object
-  long ray_ = 0;
+  std::vector<cgfs::Count> tested_;  // the last ray that tested each object
+  cgfs::Count ray_ = 0;
 };
 
 // A ray as the checks below draw them.
@@ -304,7 +304,7 @@ Box Region(const Scene& scene) {
 
 // `rays` rays of the four kinds through the scene: the hierarchy's closest hit, and
 // its any-hit answer, against the grid's.
-void CheckAgainstGrid(const std::string& name, const Scene& original, long rays) {
+void CheckAgainstGrid(const std::string& name, const Scene& original, cgfs::Count rays) {
   Scene scene = original;
   Optimizations bvh;
   bvh.bvh = true;
@@ -313,9 +313,9 @@ void CheckAgainstGrid(const std::string& name, const Scene& original, long rays)
   GridSearch grid(scene.objects);
   const Box region = Region(scene);
   Random random(2026);
-  long hits[4] = {};
-  long misses = 0;
-  for (long i = 0; i < rays; ++i) {
+  cgfs::Count hits[4] = {};
+  cgfs::Count misses = 0;
+  for (cgfs::Count i = 0; i < rays; ++i) {
     const int kind = static_cast<int>(i % 4);
     const TestRay ray = Draw(kind, scene, region, random);
     const Hit expected = grid.Closest(ray.O, ray.D, ray.t_min, ray.t_max);
@@ -335,7 +335,7 @@ void CheckAgainstGrid(const std::string& name, const Scene& original, long rays)
   // Each kind hits something often enough to mean something, and some rays miss.
   INFO(name << ": hits of each kind " << hits[0] << ", " << hits[1] << ", " << hits[2] << ", "
             << hits[3] << " of " << rays / 4 << "; " << misses << " misses");
-  for (const long kind_hits : hits) {
+  for (const cgfs::Count kind_hits : hits) {
     CHECK(kind_hits > rays / 40);
   }
   CHECK(misses > rays / 40);

@@ -22,10 +22,10 @@ using cgfs::test::Total;
 
 namespace {
 
-constexpr long kScale = 5;  // the overdraw views' shared top of the scale
+constexpr cgfs::Count kScale = 5;  // the overdraw views' shared top of the scale
 
 // The writes RenderScene makes to each pixel of a 600x600 canvas, row by row from the top.
-std::vector<long> Writes(const HiddenSurfaceRemoval& method) {
+std::vector<cgfs::Count> Writes(const HiddenSurfaceRemoval& method) {
   Canvas canvas(600, 600);
   const cgfs::Tallying tallying(cgfs::kPixelsPut, 600, 600);
   RenderScene(SceneTransformedCubes(), canvas, method);
@@ -38,8 +38,8 @@ std::vector<long> Writes(const HiddenSurfaceRemoval& method) {
 // `which`, a number for the set of triangles crossed (a sum of a large odd number
 // times each one's index plus one): where it changes, an edge passes.
 struct Crossed {
-  std::vector<long> count = std::vector<long>(600 * 600, 0);
-  std::vector<long> which = std::vector<long>(600 * 600, 0);
+  std::vector<cgfs::Count> count = std::vector<cgfs::Count>(600 * 600, 0);
+  std::vector<cgfs::Count> which = std::vector<cgfs::Count>(600 * 600, 0);
 };
 Crossed Crossings() {
   const Scene scene = SceneTransformedCubes();
@@ -51,12 +51,12 @@ Crossed Crossings() {
       const glm::dvec3 D =
           camera.orientation * glm::dvec3(x * camera.viewport_width / 600,
                                           y * camera.viewport_height / 600, camera.distance);
-      long count = 0, which = 0;
+      cgfs::Count count = 0, which = 0;
       for (std::size_t k = 0; k < cast.triangles.size(); ++k) {
         const std::optional<double> t = MeetsTriangle(cast.triangles[k], camera.position, D);
         if (t && *t > 1) {
           ++count;
-          which += static_cast<long>(k + 1) * 1000003;
+          which += static_cast<cgfs::Count>(k + 1) * 1000003;
         }
       }
       crossed.count[(299 - y) * 600 + (x + 300)] = count;
@@ -69,7 +69,7 @@ Crossed Crossings() {
 // Whether every pixel within 2 of (column, row) has the same value: away from every
 // edge, where rasterising and ray casting may disagree by a pixel (and where two
 // triangles that share an edge both write it).
-bool Steady(const std::vector<long>& counts, int column, int row) {
+bool Steady(const std::vector<cgfs::Count>& counts, int column, int row) {
   for (int dr = -2; dr <= 2; ++dr) {
     for (int dc = -2; dc <= 2; ++dc) {
       const int c = column + dc, r = row + dr;
@@ -90,10 +90,10 @@ bool IsWhite(const cgfs::Image& image, int i) {
 
 TEST_CASE("the painter writes each pixel once for every triangle in front of it or behind",
           "[cost]") {
-  const std::vector<long> painter =
+  const std::vector<cgfs::Count> painter =
       Writes({.draw_order = DrawOrder::kPaintersAlgorithm, .cull_back_faces = false});
   const Crossed crossings = Crossings();
-  long compared = 0, equal = 0;
+  cgfs::Count compared = 0, equal = 0;
   for (int row = 0; row < 600; ++row) {
     for (int column = 0; column < 600; ++column) {
       if (Steady(crossings.which, column, row)) {
@@ -111,11 +111,11 @@ TEST_CASE("the painter writes each pixel once for every triangle in front of it 
 
 TEST_CASE("the depth buffer writes what it shows at least once, and never more than the painter",
           "[cost]") {
-  const std::vector<long> painter =
+  const std::vector<cgfs::Count> painter =
       Writes({.draw_order = DrawOrder::kPaintersAlgorithm, .cull_back_faces = false});
-  const std::vector<long> depth = Writes({.cull_back_faces = false});
+  const std::vector<cgfs::Count> depth = Writes({.cull_back_faces = false});
   const Canvas figure = RenderFigureNamed(Figures(), "fig-12-4-depth-buffer");
-  long wrong = 0;
+  cgfs::Count wrong = 0;
   for (int i = 0; i < 600 * 600; ++i) {
     wrong += (depth[i] == 0) != IsWhite(figure.GetImage(), i) || depth[i] > painter[i];
   }
@@ -129,10 +129,10 @@ TEST_CASE("with back faces culled, a pixel of the cubes is written once, away fr
   // Two closed convex boxes apart on the screen: a ray meets one front face of one box.
   // Only on an edge two front triangles share can both write a pixel: the second when
   // its interpolated 1/z comes out strictly closer there, by rounding.
-  const std::vector<long> culled = Writes({});
+  const std::vector<cgfs::Count> culled = Writes({});
   const Crossed crossings = Crossings();
   const Canvas figure = RenderFigureNamed(Figures(), "back-face-culling");
-  long wrong = 0, twice = 0;
+  cgfs::Count wrong = 0, twice = 0;
   for (int i = 0; i < 600 * 600; ++i) {
     const bool shown = !IsWhite(figure.GetImage(), i);
     const bool on_edge = !Steady(crossings.which, i % 600, i / 600);

@@ -22,14 +22,14 @@ namespace {
 
 // The levels the view shows, read back from its colours: level k is the ramp's colour
 // for k on its scale of 0 to 8, grey is no texture (-1); any other colour is -2.
-std::vector<long> LevelsShown(const cgfs::Canvas& view) {
+std::vector<cgfs::Count> LevelsShown(const cgfs::Canvas& view) {
   const int above_strip = 600 - cgfs::CostStripHeight(600) - 1;
-  std::vector<long> levels(600 * 600, -1);
+  std::vector<cgfs::Count> levels(600 * 600, -1);
   for (int row = 0; row < above_strip; ++row) {
     for (int column = 0; column < 600; ++column) {
       const cgfs::Rgb8 pixel = view.GetImage().At(column, row);
-      long level = pixel == cgfs::kCostNothing ? -1 : -2;
-      for (long k = 0; k <= 8; ++k) {
+      cgfs::Count level = pixel == cgfs::kCostNothing ? -1 : -2;
+      for (cgfs::Count k = 0; k <= 8; ++k) {
         if (pixel == cgfs::CostRamp(cgfs::CostPosition(static_cast<double>(k), 8))) {
           level = k;
         }
@@ -47,7 +47,7 @@ TEST_CASE("the mip-level view reads the level of the texels a pixel covers, as r
   const Model crate = TexturedCube(BuildMipChain(MakeCrateTexture(256)));
   const Scene scene = SceneCrates(crate);
   const std::vector<cgfs::Figure> figures = Figures({});
-  const std::vector<long> levels =
+  const std::vector<cgfs::Count> levels =
       LevelsShown(cgfs::test::RenderFigureNamed(figures, "crates-trilinear-mip-levels"));
   CHECK(std::count(levels.begin(), levels.end(), -2L) == 0);
   const cgfs::test::CastScene cast_scene = CastSceneOf(scene);
@@ -57,7 +57,7 @@ TEST_CASE("the mip-level view reads the level of the texels a pixel covers, as r
     const glm::dvec3 D = camera.orientation * glm::dvec3(x / 600, y / 600, camera.distance);
     return cgfs::test::Cast(cast_scene, camera.position, D, 1, 1e9, true);
   };
-  long compared = 0, agreeing = 0, untextured = 0;
+  cgfs::Count compared = 0, agreeing = 0, untextured = 0;
   // Above the scale strip, which covers the bottom rows.
   const int lowest = -300 + cgfs::CostStripHeight(600) + 1;
   for (int y = lowest; y < 300; y += 2) {
@@ -75,7 +75,7 @@ TEST_CASE("the mip-level view reads the level of the texels a pixel covers, as r
       if (std::abs(level - std::floor(level) - 0.5) < 0.05) {
         continue;  // a step or so from where the level changes
       }
-      const long shown = levels[(299 - y) * 600 + (x + 300)];
+      const cgfs::Count shown = levels[(299 - y) * 600 + (x + 300)];
       if (shown < 0) {
         ++untextured;  // the silhouette a pixel or two from the rays' (see below)
         continue;
@@ -96,9 +96,9 @@ TEST_CASE("the mip-level view reads the level of the texels a pixel covers, as r
   CHECK(untextured < compared / 100);
   // What the view says once drawn: the levels of every pixel (those under the scale strip
   // too, which the picture hides), at most the largest it shows.
-  long shown_total = 0;
-  for (const long level : levels) {
-    shown_total += std::max(level, 0L);
+  cgfs::Count shown_total = 0;
+  for (const cgfs::Count level : levels) {
+    shown_total += std::max(level, cgfs::Count{0});
   }
   const std::string said =
       cgfs::test::MeasuredByFigureNamed(figures, "crates-trilinear-mip-levels");

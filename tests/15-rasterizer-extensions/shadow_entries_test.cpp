@@ -26,7 +26,7 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
   Canvas canvas(600, 600);
   Extensions extensions;
   extensions.shadows = Shadows::kShadowMaps;
-  std::vector<long> entries;
+  std::vector<cgfs::Count> entries;
   {
     const cgfs::Tallying tallying(kShadowMapEntries, 600, 600, -1);
     RenderScene(scene, canvas, {}, extensions);
@@ -38,7 +38,7 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
   // the triangle it is on.
   const cgfs::test::CastScene cast = CastSceneOf(scene);
   const cgfs::test::CastCamera camera = CastCameraOf(scene);
-  const auto entry_at = [&](double x, double y) -> std::pair<long, long> {
+  const auto entry_at = [&](double x, double y) -> std::pair<cgfs::Count, cgfs::Count> {
     const glm::dvec3 D = camera.orientation * glm::dvec3(x / 600, y / 600, camera.distance);
     const auto hit = cgfs::test::Cast(cast, camera.position, D, 1, 1e9, true);
     if (!hit) {
@@ -46,7 +46,7 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
     }
     return {ShadowMapEntry(map, hit->point).value_or(-1), hit->instance * 100000 + hit->triangle};
   };
-  long compared = 0, agreeing = 0;
+  cgfs::Count compared = 0, agreeing = 0;
   for (int y = -297; y < 300; y += 3) {
     for (int x = -297; x < 300; x += 3) {
       const auto here = entry_at(x, y);
@@ -65,13 +65,13 @@ TEST_CASE("each pixel reads the entry of the point a ray through it finds, away 
   CHECK(agreeing == compared);
 
   // The view: each pixel, the number of pixels that read its entry.
-  const std::vector<long> shared = PixelsSharingEntry(entries);
+  const std::vector<cgfs::Count> shared = PixelsSharingEntry(entries);
   const std::vector<cgfs::Figure> figures = Figures({});
   CheckDrawn(figures, "shadow-map-pixels-per-entry", shared, 404);
   CHECK(FindFigure(figures, "shadow-map").cost_view == "shadow-map-pixels-per-entry");
 }
 
 TEST_CASE("PixelsSharingEntry: each pixel, how many pixels read its entry", "[cost]") {
-  CHECK(PixelsSharingEntry({5, 5, -1, 7, 5}) == std::vector<long>{3, 3, -1, 1, 3});
+  CHECK(PixelsSharingEntry({5, 5, -1, 7, 5}) == std::vector<cgfs::Count>{3, 3, -1, 1, 3});
   CHECK(PixelsSharingEntry({}).empty());
 }

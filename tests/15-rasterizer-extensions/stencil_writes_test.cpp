@@ -23,10 +23,10 @@ using cgfs::test::Total;
 
 namespace {
 
-constexpr long kScale = 20;  // the top of the view's scale
+constexpr cgfs::Count kScale = 20;  // the top of the view's scale
 
 // The stencil's writes per pixel as RenderScene draws the shadows scene at 600x600.
-std::vector<long> StencilWrites(const Scene& scene) {
+std::vector<cgfs::Count> StencilWrites(const Scene& scene) {
   Canvas canvas(600, 600);
   Extensions extensions;
   extensions.shadows = Shadows::kShadowVolumes;
@@ -59,8 +59,8 @@ std::vector<Model> WorldVolumes(const Scene& scene, const Light& light) {
 // `dark_side`: the surface is an occluder's side away from the light, where its
 // volume's near cap lies on it, at the same depth (see BuildShadowVolume).
 struct Crossing {
-  long count = 0;
-  long which = 0;
+  cgfs::Count count = 0;
+  cgfs::Count which = 0;
   bool dark_side = false;
 };
 Crossing VolumeCrossing(const cgfs::test::CastScene& cast, const cgfs::test::CastCamera& camera,
@@ -77,7 +77,7 @@ Crossing VolumeCrossing(const cgfs::test::CastScene& cast, const cgfs::test::Cas
                      static_cast<std::size_t>(surface->triangle)]
           .closed &&
       glm::dot(surface->normal, light.position - surface->point) <= 0;
-  long k = 0;
+  cgfs::Count k = 0;
   for (const Model& volume : volumes) {
     for (const Triangle& T : volume.triangles) {
       ++k;
@@ -98,7 +98,7 @@ Crossing VolumeCrossing(const cgfs::test::CastScene& cast, const cgfs::test::Cas
 TEST_CASE("the stencil writes each pixel once for every volume face behind what it shows",
           "[cost][ray-cast]") {
   const Scene scene = SceneShadows();
-  const std::vector<long> writes = StencilWrites(scene);
+  const std::vector<cgfs::Count> writes = StencilWrites(scene);
   const cgfs::test::CastScene cast = CastSceneOf(scene);
   const cgfs::test::CastCamera camera = CastCameraOf(scene);
   const Light& light = scene.lights.back();  // the point light
@@ -106,7 +106,7 @@ TEST_CASE("the stencil writes each pixel once for every volume face behind what 
   // Every sixth pixel each way (ray casting every volume face is slow), away from
   // edges: where the rays two and a half pixels around it cross the same faces
   // beyond the same surface triangle.
-  long compared = 0, equal = 0, dark_side = 0;
+  cgfs::Count compared = 0, equal = 0, dark_side = 0;
   for (int y = -297; y < 300; y += 6) {
     for (int x = -297; x < 300; x += 6) {
       const Crossing here = VolumeCrossing(cast, camera, volumes, light, x, y);
@@ -117,7 +117,7 @@ TEST_CASE("the stencil writes each pixel once for every volume face behind what 
       }
       if (steady) {
         ++compared;
-        const long written = writes[(299 - y) * 600 + (x + 300)];
+        const cgfs::Count written = writes[(299 - y) * 600 + (x + 300)];
         // On a dark side the cap is written or not as the depth test's rounding
         // decides, pixel by pixel; it changes nothing (it adds and takes away alike).
         equal += written == here.count || (here.dark_side && written == here.count + 1);

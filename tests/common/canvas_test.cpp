@@ -77,8 +77,8 @@ TEST_CASE(
     "[canvas]") {
   Canvas canvas(4, 2);
   canvas.PutPixel(-2, 0, cgfs::kRed);  // before: not counted
-  std::vector<long> counts;
-  long total = 0;
+  std::vector<cgfs::Count> counts;
+  cgfs::Count total = 0;
   {
     const cgfs::Tallying tallying(cgfs::kPixelsPut, 4, 2);
     canvas.PutPixel(-2, 0, cgfs::kRed);  // column 0, row 0
@@ -89,6 +89,6 @@ TEST_CASE(
     total = tallying.Total();
   }
   canvas.PutPixel(-2, 0, cgfs::kRed);  // after: not counted
-  CHECK(counts == std::vector<long>{2, 0, 0, 0, 0, 0, 0, 1});
+  CHECK(counts == std::vector<cgfs::Count>{2, 0, 0, 0, 0, 0, 0, 1});
   CHECK(total == 4);
 }

@@ -23,7 +23,7 @@ TEST_CASE("TallyAt counts at its canvas point, off the canvas in the total only"
   cgfs::TallyAt(kCounted, 1, -1);
   cgfs::TallyAt(kCounted, 2, 0);  // off the canvas
   cgfs::TallyAt(kOther, -2, 0);   // another counter: not this one's
-  CHECK(tallying.PerPixel() == std::vector<long>{1, 0, 0, 0, 0, 0, 0, 2});
+  CHECK(tallying.PerPixel() == std::vector<cgfs::Count>{1, 0, 0, 0, 0, 0, 0, 2});
   CHECK(tallying.Total() == 4);
 }
 
@@ -36,7 +36,7 @@ TEST_CASE("Tally counts at the pixel the thread draws, or in the total when it d
     cgfs::Tally(kCounted);
   }
   cgfs::Tally(kCounted);  // no current pixel
-  CHECK(tallying.PerPixel() == std::vector<long>{0, 0, 0, 0, 0, 2, 0, 0});
+  CHECK(tallying.PerPixel() == std::vector<cgfs::Count>{0, 0, 0, 0, 0, 2, 0, 0});
   CHECK(tallying.Total() == 3);
 }
 
@@ -44,13 +44,23 @@ TEST_CASE("Tally counts several events at once", "[tally]") {
   const cgfs::Tallying tallying(kCounted, 2, 2);
   const cgfs::CurrentPixel pixel(0, 0);  // column 1, row 0
   cgfs::Tally(kCounted, 4);
-  CHECK(tallying.PerPixel() == std::vector<long>{0, 4, 0, 0});
+  CHECK(tallying.PerPixel() == std::vector<cgfs::Count>{0, 4, 0, 0});
+}
+
+TEST_CASE("counts past 2^31 are kept whole (64 bits on every target, WebAssembly too)", "[tally]") {
+  static_assert(sizeof(cgfs::Count) == 8);
+  const cgfs::Tallying tallying(kCounted, 2, 2);
+  const cgfs::CurrentPixel pixel(0, 0);  // column 1, row 0
+  cgfs::Tally(kCounted, 3'000'000'000);
+  cgfs::Tally(kCounted, 600'360'000);
+  CHECK(tallying.PerPixel() == std::vector<cgfs::Count>{0, 3'600'360'000, 0, 0});
+  CHECK(tallying.Total() == 3'600'360'000);
 }
 
 TEST_CASE("Record keeps the last value at the pixel drawn, the rest from the start value",
           "[tally]") {
   int asked = 0;
-  const auto value = [&asked](long v) {
+  const auto value = [&asked](cgfs::Count v) {
     return [&asked, v] {
       ++asked;
       return v;
@@ -66,7 +76,7 @@ TEST_CASE("Record keeps the last value at the pixel drawn, the rest from the sta
     cgfs::Record(kCounted, value(6));
     cgfs::Record(kOther, value(8));  // another counter's
   }
-  CHECK(tallying.PerPixel() == std::vector<long>{-1, -1, 6, -1});
+  CHECK(tallying.PerPixel() == std::vector<cgfs::Count>{-1, -1, 6, -1});
 }
 
 TEST_CASE("One Tallying at a time", "[tally]") {
@@ -95,8 +105,8 @@ TEST_CASE("Threads drawing pixels of their own tally without a lock", "[tally]")
   for (std::thread& thread : threads) {
     thread.join();
   }
-  for (const long count : tallying.PerPixel()) {
+  for (const cgfs::Count count : tallying.PerPixel()) {
     REQUIRE(count == kRepeats);
   }
-  CHECK(tallying.Total() == static_cast<long>(kSide) * kSide * kRepeats + kSide);
+  CHECK(tallying.Total() == static_cast<cgfs::Count>(kSide) * kSide * kRepeats + kSide);
 }

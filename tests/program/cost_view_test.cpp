@@ -56,7 +56,7 @@ TEST_CASE("counts sit on the ramp on a log scale up to the scale's top", "[cost]
 
 TEST_CASE("DrawCost draws each pixel's count and a strip with the scale", "[cost]") {
   Canvas canvas(50, 100);
-  std::vector<long> counts(50 * 100, 0);
+  std::vector<cgfs::Count> counts(50 * 100, 0);
   counts[0] = 4;            // top-left pixel
   counts[50 * 10 + 7] = 2;  // column 7, row 10
   cgfs::DrawCost(canvas, counts, 4);
@@ -74,7 +74,7 @@ TEST_CASE("DrawCost draws each pixel's count and a strip with the scale", "[cost
     CHECK(image.At(step * 10, 99) == expected);
     CHECK(image.At(step * 10 + 9, 100 - strip) == expected);
   }
-  CHECK_THROWS_AS(cgfs::DrawCost(canvas, std::vector<long>(7), 4), std::invalid_argument);
+  CHECK_THROWS_AS(cgfs::DrawCost(canvas, std::vector<cgfs::Count>(7), 4), std::invalid_argument);
   counts[1] = -1;  // nothing to count there
   cgfs::DrawCost(canvas, counts, 4);
   CHECK(canvas.GetImage().At(1, 0) == cgfs::kCostNothing);
@@ -89,7 +89,7 @@ TEST_CASE("DrawCost draws each pixel's count and a strip with the scale", "[cost
 
 TEST_CASE("above kCostStepsMax the strip runs smoothly from black to white", "[cost]") {
   Canvas canvas(40, 40);
-  cgfs::DrawCost(canvas, std::vector<long>(40 * 40, 17), 1000);
+  cgfs::DrawCost(canvas, std::vector<cgfs::Count>(40 * 40, 17), 1000);
   const cgfs::Image& image = canvas.GetImage();
   CHECK(image.At(0, 39) == Rgb8{0, 0, 0});
   CHECK(image.At(39, 39) == Rgb8{255, 255, 255});

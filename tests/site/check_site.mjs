@@ -6,7 +6,8 @@
 //    the one worked by hand, and the full frame after the drag equals what the native
 //    program draws with --view set to the view the page shows;
 //  - on chapter 5's page, C and the button beside the caption switch between a figure
-//    and its cost view;
+//    and its cost view; a cost view of 3.6 billion tests says the count the native
+//    program says (every count is 64-bit, in WebAssembly too);
 //  - a page asked for a figure or a view that does not exist says so and draws the
 //    chapter's first figure; the index draws a picture for every chapter;
 //  - every link of every page leads to a file of the site.
@@ -79,6 +80,20 @@ async function CheckCostKey(browser, chapter, figure, costView) {
     Fail(`${chapter}: the cost button on ${costView} did not go back to ${figure}`);
   }
   console.log(`${chapter}: C showed ${costView}, its button ${figure} again`);
+}
+
+// A count past 2^31 on the page, as the native program prints it: the status line ends
+// with what the figure measured ("3 600 360 000 in all, at most 10 001").
+async function CheckLargeCount(browser, chapter, figure) {
+  await browser.Open(`${chapter}/index.html?figure=${figure}`);
+  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`);
+  const status = await browser.Evaluate("document.getElementById('status').textContent");
+  const out = mkdtempSync(join(tmpdir(), 'cgfs-count-'));
+  const wrote = execFileSync(join(native, chapter), ['--figure', figure, '--output', out], {encoding: 'utf8'});
+  rmSync(out, {recursive: true});
+  const measured = wrote.trim().split(': ').pop();
+  if (!status.endsWith(`; ${measured}`)) Fail(`${chapter}: ${figure} says '${status}', the program '${measured}'`);
+  else console.log(`${chapter}: ${figure} counts as the program does: ${measured}`);
 }
 
 async function CheckCamera(browser, chapter, figure) {
@@ -211,6 +226,7 @@ try {
     await CheckBadAddresses(browser);
     await CheckCamera(browser, '05-raytracer-extensions', 'fig-5-1-camera');
     await CheckCostKey(browser, '05-raytracer-extensions', 'subsampling-thin-wires', 'subsampling-thin-wires-searches');
+    await CheckLargeCount(browser, '05-raytracer-extensions', 'sphere-field-10000-tests-without-hierarchy');
     await CheckCamera(browser, '15-rasterizer-extensions', 'everything');
     await CheckIndex(browser);
     await CheckEveryFigure(browser);

@@ -16,7 +16,7 @@
 namespace cgfs::test {
 
 // 1234567 as a caption writes it: "1 234 567".
-inline std::string Spaced(long n) {
+inline std::string Spaced(cgfs::Count n) {
   const std::string digits = std::to_string(n);
   std::string spaced;
   for (std::size_t i = 0; i < digits.size(); ++i) {
@@ -28,11 +28,11 @@ inline std::string Spaced(long n) {
   return spaced;
 }
 
-inline long Total(const std::vector<long>& counts) {
-  return std::accumulate(counts.begin(), counts.end(), 0L);
+inline cgfs::Count Total(const std::vector<cgfs::Count>& counts) {
+  return std::accumulate(counts.begin(), counts.end(), cgfs::Count{0});
 }
 
-inline long Max(const std::vector<long>& counts) {
+inline cgfs::Count Max(const std::vector<cgfs::Count>& counts) {
   return *std::max_element(counts.begin(), counts.end());
 }
 
@@ -41,17 +41,17 @@ inline long Max(const std::vector<long>& counts) {
 // count: nothing there, kCostNothing), and says once drawn "<total> in all, at most
 // <max>" of them (the negative counts left out of the total).
 inline void CheckDrawn(const std::vector<Figure>& figures, const std::string& name,
-                       const std::vector<long>& counts, long scale_max) {
+                       const std::vector<cgfs::Count>& counts, cgfs::Count scale_max) {
   const Canvas canvas = RenderFigureNamed(figures, name);
-  long total = 0;
-  for (const long count : counts) {
-    total += std::max(count, 0L);
+  cgfs::Count total = 0;
+  for (const cgfs::Count count : counts) {
+    total += std::max(count, cgfs::Count{0});
   }
   CHECK(MeasuredByFigureNamed(figures, name) ==
         Spaced(total) + " in all, at most " + Spaced(Max(counts)));
   const Image& image = canvas.GetImage();
   const int above_strip = image.Height() - CostStripHeight(image.Height()) - 1;
-  long wrong = 0;
+  cgfs::Count wrong = 0;
   for (int row = 0; row < above_strip; ++row) {
     for (int column = 0; column < image.Width(); ++column) {
       const double count = static_cast<double>(counts[row * image.Width() + column]);

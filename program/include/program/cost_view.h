@@ -9,6 +9,7 @@
 
 #include "cgfs/canvas.h"
 #include "cgfs/image.h"
+#include "cgfs/tally.h"
 
 namespace cgfs {
 
@@ -33,20 +34,20 @@ int CostStripHeight(int canvas_height);
 // as a block of equal width; above, the ramp runs smoothly. Counts above scale_max
 // are drawn as scale_max, and a negative count, which stands for nothing there to count
 // (no texture on the pixel, say), as kCostNothing, a grey the ramp never takes.
-inline constexpr long kCostStepsMax = 16;
+inline constexpr cgfs::Count kCostStepsMax = 16;
 inline constexpr Rgb8 kCostNothing{128, 128, 128};
-void DrawCost(Canvas& canvas, const std::vector<long>& counts, long scale_max);
+void DrawCost(Canvas& canvas, const std::vector<cgfs::Count>& counts, cgfs::Count scale_max);
 
 // What a cost view says of its counts: their total and the largest, as
 // "13 414 717 in all, at most 292".
-std::string CostTotals(const std::vector<long>& counts);
+std::string CostTotals(const std::vector<cgfs::Count>& counts);
 
 // A cost view's drawing, and what it said of the counts it last drew, for its figure's
 // `measured` (program/figure.h). Copies share what was said.
 class CostView {
  public:
   CostView() : said_(std::make_shared<std::string>()) {}
-  void Draw(Canvas& canvas, const std::vector<long>& counts, long scale_max) const {
+  void Draw(Canvas& canvas, const std::vector<cgfs::Count>& counts, cgfs::Count scale_max) const {
     DrawCost(canvas, counts, scale_max);
     *said_ = CostTotals(counts);
   }
