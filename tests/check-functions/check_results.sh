@@ -161,5 +161,10 @@ PY
   run 02 "$work/py/one.py" --case 3
   check "--case without --function: exit 2" test $status -eq 2
 fi
+echo "== one number is said as one number"
+mkdir -p "$work/js"
+sed 's/^  return i;$/  return -1;/' "$reference/js/light.js" >"$work/js/light.js"
+run 03 "$work/js/light.js" --function ComputeLighting
+check "ComputeLighting returning -1: 'returned -1, expected 1', not '[-1]'" says "^      returned -1, expected 1 \(within 1e-9\)$"
 [ $failed -eq 0 ] && echo "PASS: verdicts, exit statuses, printed output and results.json as documented"
 exit $failed

@@ -317,6 +317,8 @@ export function verdict(answer, kase, entry, { language, adapterGiven }) {
   const near = (a, e) => (Number.isFinite(e) ? Math.abs(a - e) <= kase.tolerance : a === e);
   if (compared.length === expected.length && compared.every((a, i) => near(a, expected[i]))) return null;
   const tolerance = kase.tolerance < 1e-4 ? kase.tolerance.toExponential() : String(kase.tolerance);
-  return [`returned ${shown(compared)}${truncated ? " (truncated)" : ""}, expected ${shown(expected)}` +
+  // One number is said as one number (0.5), not as a list of one ([0.5]).
+  const say = (values) => (!Array.isArray(kase.expected) && values.length === 1 ? shown(values).slice(1, -1) : shown(values));
+  return [`returned ${say(compared)}${truncated ? " (truncated)" : ""}, expected ${say(expected)}` +
     (kase.tolerance ? ` (within ${tolerance})` : "")];
 }
