@@ -196,6 +196,28 @@ async function ClickDelays(until, most = 60) {
   return browser.Evaluate('window.__delays');
 }
 
+// Python typed as a reader types it: Enter after a block's first line indents by 4 (the
+// starter's and PEP 8's unit), and "else:" typed in a deeper line goes back to its "if".
+async function CheckPythonIndent() {
+  await OpenPanel('02-basic-rays', 'python');
+  const editor = "document.querySelector('#code-panel .CodeMirror').CodeMirror";
+  await browser.Evaluate(`(() => { const e = ${editor}; e.setValue('def f(x):\\n    if x:'); e.focus(); ` +
+                         `e.setCursor(e.lineCount(), 0); })()`);
+  const enter = {key: 'Enter', code: 'Enter', windowsVirtualKeyCode: 13, text: '\r'};
+  for (const text of [null, 'return 1', null, 'else:']) {
+    if (text === null) {
+      await browser.Send('Input.dispatchKeyEvent', {type: 'keyDown', ...enter});
+      await browser.Send('Input.dispatchKeyEvent', {type: 'keyUp', ...enter});
+    } else {
+      await browser.Send('Input.insertText', {text});
+    }
+  }
+  const typed = await browser.Evaluate(`${editor}.getValue()`);
+  const wanted = 'def f(x):\n    if x:\n        return 1\n    else:';
+  if (typed !== wanted) Fail(`Python typed in the editor: ${JSON.stringify(typed)}, not ${JSON.stringify(wanted)}`);
+  else console.log('Python typed in the editor: a block indented by 4, "else:" back at its "if"');
+}
+
 async function CheckEndlessLoopAndSyntax() {
   const ours = readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8');
   await OpenPanel('02-basic-rays', 'javascript');
@@ -210,6 +232,22 @@ async function CheckEndlessLoopAndSyntax() {
   if (delays.length < 5 || Math.max(...delays) > 100) Fail(`an endless loop: clicks meanwhile took ${delays.map(Math.round)} ms`);
   console.log(`an endless loop ended on its case's time limit, the check in ${((Date.now() - start) / 1000).toFixed(1)} s; ` +
               `${delays.length} clicks meanwhile answered within ${Math.round(Math.max(...delays))} ms`);
+  // Stop during a check of a function that never returns: the check ends at once, the
+  // cases not run said to be stopped (each would have taken its 5 s).
+  await Type(ours.replace('function CanvasToViewport(x, y) {', 'function CanvasToViewport(x, y) {\n  for (;;) {}'));
+  await browser.Evaluate(`(() => { delete ${$('code-report', 'dataset.done')}; document.getElementById('code-check').click(); })()`);
+  await sleep(1500);
+  const stopped = Date.now();
+  await browser.Evaluate("document.getElementById('code-stop').click()");
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, 'the check after Stop', 30);
+  const took = (Date.now() - stopped) / 1000;
+  const afterStop = await browser.Evaluate($('code-report', 'textContent'));
+  const status = await browser.Evaluate("document.getElementById('code-status').textContent");
+  if (took > 1 || !/you pressed Stop/.test(afterStop) || !/^Stopped after/.test(status)) {
+    Fail(`Stop during an endless check: done ${took.toFixed(1)} s later, status "${status}", report:\n${afterStop}`);
+  } else {
+    console.log(`Stop ended a check of an endless function ${took.toFixed(2)} s after it was pressed: "${status}"`);
+  }
   for (const [language, code, line] of [['javascript', 'function CanvasToViewport(x, y) {\n  return [x,, y;\n}\n', 2],
     ['python', 'Cw = 600\n\n\ndef CanvasToViewport(x, y)\n    return x\n', 4]]) {
     await OpenPanel('02-basic-rays', language);
@@ -283,7 +321,18 @@ async function CheckLayout() {
       if (!inside) Fail(`${chapter}: at the page's ${where}, the caption, status or figure is outside a 1280 x 900 window`);
     }
   }
+  // A 390 x 844 phone: nothing wider than the screen (a wide table or code scrolls in
+  // its own box; chapter 5's page was 833 px wide, 14's 432).
+  await browser.Send('Emulation.setDeviceMetricsOverride', {width: 390, height: 844, deviceScaleFactor: 1, mobile: true});
+  const wide = [];
+  for (const chapter of readdirSync(join(repo, 'chapters')).filter((name) => /^\d\d-/.test(name)).sort()) {
+    await browser.Open(`${chapter}/index.html`);
+    const width = await browser.Evaluate('document.documentElement.scrollWidth');
+    if (width > 390) wide.push(`${chapter} ${width} px`);
+  }
   await browser.Send('Emulation.clearDeviceMetricsOverride');
+  if (wide.length) Fail(`on a 390 x 844 phone, pages wider than the screen: ${wide.join(', ')}`);
+  else console.log('no chapter page is wider than a 390 x 844 phone');
   console.log('every chapter page keeps its caption, status and figure in a 1280 x 900 window, at its top and bottom');
 }
 
@@ -314,6 +363,7 @@ const parts = {
   javascript: () => CheckReferences('javascript', Chapters(), () => true),
   mistakes: CheckMistakes,
   loop: CheckEndlessLoopAndSyntax,
+  indent: CheckPythonIndent,
   python: async () => {
     await CheckReferences('python', Chapters(), (chapter, figure) => pythonDraws[chapter] === figure);
     await CheckPythonMistake();

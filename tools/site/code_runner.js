@@ -140,7 +140,9 @@ class PageRunner {
   }
 
   async run(request) {
-    if (Date.now() - this.started > this.bound) return { stopped: true };
+    // Stop pressed: no case after it runs (each would take a new worker, and an endless
+    // function its full time limit).
+    if (this.ended || Date.now() - this.started > this.bound) return { stopped: true };
     if (!this.worker.Alive) {  // the last case ran out of time: a new worker
       this.worker = await SupplyFor(this.language).Take();
       try {
@@ -150,17 +152,23 @@ class PageRunner {
       }
     }
     const answer = await this.worker.Request({ op: 'case', request }, this.timeLimit);
+    if (this.ended) return { stopped: true };  // Stop pressed while this case ran
     if (answer.timeout) return { timeout: true, limit: this.timeLimit };
     delete answer.id;
     return { ...answer, limit: this.timeLimit };
   }
 
   stoppedLine() {
+    if (this.ended) return `stopped after ${Math.round((Date.now() - this.started) / 1000)} s: you pressed Stop`;
     return CGFS_CHECK.stoppedLine(Math.round((Date.now() - this.started) / 1000), this.totalCases,
       { timeLimit: this.timeLimit, loadLimit: CGFS_CHECK.LOAD_LIMIT });
   }
 
-  End() { this.worker?.End(); }
+  // Stop: the case running ends with its worker, and no other runs.
+  End() {
+    this.ended = true;
+    this.worker?.End();
+  }
 }
 
 // A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },

@@ -64,6 +64,8 @@ function ShowCode(language, code, file) {
   $('code-language').value = language;
   $('code-file').textContent = yourCode.file;
   yourCode.editor.setOption('mode', language);
+  // Python's blocks are 4 spaces (PEP 8, and the starter's), JavaScript's 2 (the demos').
+  yourCode.editor.setOption('indentUnit', language === 'python' ? 4 : 2);
   yourCode.editor.setValue(code);
   yourCode.editor.clearHistory();
 }
@@ -102,6 +104,10 @@ async function Check() {
     $('code-report').textContent = lines.join('\n');
     $('code-report').dataset.failed = failed ? 'yes' : 'no';
     const checked = (Date.now() - runner.started) / 1000;
+    if (runner.ended && yourCode.running !== runner) {
+      Status(`Stopped after ${checked.toFixed(1)} s: the cases not run are not checked.`);
+      return;
+    }
     Status(`${failed ? 'Something to fix' : 'Every case passed'}: checked in ${checked.toFixed(2)} s` +
            (language === 'python' ? ` (${((performance.now() - start) / 1000).toFixed(1)} s with starting Python)` : ''));
   } catch (error) {
