@@ -99,6 +99,13 @@ async function CheckPicker(browser, chapter) {
     Fail(`${chapter}: for index-zero.obj the page says "${said}", the program (exit ${refused.status}) "${refused.stderr}"`);
   }
   if ((await browser.Evaluate(kFigureNames))[0] !== first) Fail(`${chapter}: a refused file changed the figures`);
+  // The list still names the model drawn, and the line is in view (it is below the picture).
+  const listed = await browser.Evaluate("document.getElementById('model-choice').selectedOptions[0].textContent");
+  if (listed !== 'your own: house.obj') Fail(`${chapter}: after a refused file the list says "${listed}", not the house still drawn`);
+  // (within a pixel: layout places it in fractions of one)
+  const inView = await browser.Evaluate(`(({top, bottom}) => top >= 0 && bottom <= innerHeight + 1)` +
+                                        `(document.getElementById('model-said').getBoundingClientRect())`);
+  if (!inView) Fail(`${chapter}: the refusal's line is out of view`);
 
   const alone = join(work, 'alone');
   rmSync(alone, {recursive: true, force: true});

@@ -55,6 +55,22 @@ function SayModel(lines) {
   said.hidden = lines.length === 0;
 }
 
+// The list's entry for the reader's own model while it is drawn ("your own: NAME", the
+// value '#own'), so that the list names what is drawn; none when `name` is null.
+function ShowOwnChoice(name) {
+  const select = document.getElementById('model-choice');
+  let option = select.querySelector('option[value="#own"]');
+  if (name === null) {
+    option?.remove();
+    return;
+  }
+  if (!option) {
+    option = new Option('', '#own');
+    select.append(option);
+  }
+  option.textContent = `your own: ${name}`;
+}
+
 // The chapter's figures made with `model` (none: its own): the figures as the worker
 // describes them, or null when the program refused the model (its line is shown, and
 // the figures stay as they were).
@@ -64,19 +80,27 @@ async function UseModel(model) {
   const answer = await figuresWorker.Configure({ op: 'options', files: model?.files ?? [],
     words: model ? ['--model', model.open] : [] });
   SayModel(answer.problem ? [answer.problem] : answer.lines ?? []);
-  return answer.problem || answer.status !== 0 ? null : answer;
+  if (answer.problem || answer.status !== 0) {
+    // The line that says why is brought into view: it is below the picture.
+    document.getElementById('model-said').scrollIntoView({ block: 'nearest' });
+    return null;
+  }
+  return answer;
 }
 
-// After a choice: the new figures listed and the first shown; a refused model leaves the
-// choice as it was.
+// After a choice (`name`: a site model's, '' for none, '#own' for the reader's files):
+// the new figures listed and the first shown; a refused model leaves the figures, and
+// the list, as they were.
 async function ModelChosen(model, name) {
   const select = document.getElementById('model-choice');
+  const was = select.querySelector('option[value="#own"]') ? '#own' : siteModel;
   const described = await UseModel(model);
   if (!described) {
-    select.value = siteModel;
+    select.value = was;
     return;
   }
-  siteModel = name;
+  ShowOwnChoice(name === '#own' ? model.open : null);
+  siteModel = name === '#own' ? '' : name;
   select.value = name;
   ListFigures(described.figures);
   Select(0);
@@ -92,7 +116,7 @@ async function ModelsStart() {
       await ModelChosen(select.value ? await SiteModel(select.value) : null, select.value);
     } catch (error) {
       SayModel([error.message]);
-      select.value = siteModel;
+      select.value = select.querySelector('option[value="#own"]') ? '#own' : siteModel;
     }
   });
   input.addEventListener('change', async () => {
@@ -101,7 +125,7 @@ async function ModelsStart() {
     if (chosen.length === 0) return;
     const model = await OwnModel(chosen);
     if (typeof model === 'string') SayModel([model]);
-    else await ModelChosen(model, '');
+    else await ModelChosen(model, '#own');
   });
   const asked = new URLSearchParams(location.search).get('model');
   if (!asked) return null;
