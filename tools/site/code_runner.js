@@ -13,7 +13,9 @@
 const kSiteRoot = new URL('.', document.currentScript.src);
 
 // Pyodide's files, from vendor/pyodide.js (a script, which a page opened from a file may
-// load where it may not fetch), decoded once.
+// load where it may not fetch), as its base64 text: each Python worker decodes the
+// binaries itself, off the page's thread (decoded here, 18 MB froze the page for
+// seconds). The script's global is emptied once read (a `var` cannot be deleted).
 let pyodideAssets = null;
 function PyodideAssets() {
   pyodideAssets ??= new Promise((resolve, reject) => {
@@ -21,10 +23,8 @@ function PyodideAssets() {
     script.src = new URL('vendor/pyodide.js', kSiteRoot).href;
     script.onerror = () => reject(new Error('vendor/pyodide.js could not be loaded: build the site with scripts/site'));
     script.onload = () => {
-      const bytes = (base64) => Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)).buffer;
-      const { loader, asm, wasm, stdlib, lock } = self.CGFS_PYODIDE;
-      resolve({ loader, asm, lock, wasm: bytes(wasm), stdlib: bytes(stdlib) });
-      delete self.CGFS_PYODIDE;
+      resolve(self.CGFS_PYODIDE);
+      self.CGFS_PYODIDE = undefined;
     };
     document.head.append(script);
   });

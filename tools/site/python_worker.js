@@ -45,9 +45,17 @@ function LoadPyodideScripts({ asm, loader }) {
   }
 }
 
+// Base64 text as bytes (a worker's own work: the page's thread stays free).
+function Decoded(base64) {
+  const text = atob(base64);
+  const bytes = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
+  return bytes.buffer;
+}
+
 const operations = {
   async init({ assets, runner: runnerText }) {
-    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': assets.wasm, 'python_stdlib.zip': assets.stdlib });
+    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': Decoded(assets.wasm), 'python_stdlib.zip': Decoded(assets.stdlib) });
     LoadPyodideScripts(assets);
     const start = performance.now();
     pyodide = await CGFS_PYODIDE_LOADER.loadPyodide({
