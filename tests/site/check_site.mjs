@@ -7,7 +7,8 @@
 //    program draws with --view set to the view the page shows;
 //  - on chapter 5's page, C and the button beside the caption switch between a figure
 //    and its cost view; a cost view of 3.6 billion tests says the count the native
-//    program says (every count is 64-bit, in WebAssembly too);
+//    program says (every count is 64-bit, in WebAssembly too); the lists say how many
+//    figures they hold;
 //  - a page asked for a figure or a view that does not exist says so and draws the
 //    chapter's first figure; the index draws a picture for every chapter;
 //  - every link of every page leads to a file of the site.
@@ -94,6 +95,11 @@ async function CheckLargeCount(browser, chapter, figure) {
   const measured = wrote.trim().split(': ').pop();
   if (!status.endsWith(`; ${measured}`)) Fail(`${chapter}: ${figure} says '${status}', the program '${measured}'`);
   else console.log(`${chapter}: ${figure} counts as the program does: ${measured}`);
+  // The lists say how many figures they hold (they show three rows, and scroll).
+  const [count, figures, views] = await browser.Evaluate(`[document.getElementById('figures-count').textContent,
+    document.querySelectorAll('#figures button').length, document.querySelectorAll('#cost-views button').length]`);
+  const listed = `${figures} figures and ${views} views of where the work goes: the list scrolls`;
+  if (count !== listed) Fail(`${chapter}: the lists say '${count}', not '${listed}'`);
 }
 
 async function CheckCamera(browser, chapter, figure) {

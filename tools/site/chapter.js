@@ -267,6 +267,12 @@ function ListFigures(described) {
     figures.push(figure);
   }
   document.getElementById('cost-views-group').hidden = !figures.some(isCostView);
+  // How many there are: the list shows three rows, and scrolls.
+  const costViews = figures.filter(isCostView).length;
+  const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
+  Say('figures-count', plural(figures.length - costViews, 'figure', 'figures') +
+      (costViews ? ` and ${plural(costViews, 'view', 'views')} of where the work goes` : '') +
+      (figures.length > 9 ? ': the list scrolls' : ''));
 }
 
 // The other column's two tabs: the chapter's README, and the reader's own code.

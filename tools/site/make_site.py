@@ -263,6 +263,7 @@ class Site:
         body = f"""<nav>{" · ".join(around)} · {" · ".join(code)}</nav>
 <main class="chapter">
 <section id="live" data-chapter="{chapter}" data-module="Chapter{chapter[:2]}" data-sizes='{json.dumps(sizes)}' data-opening="{opening}">
+<p id="figures-count" hidden></p>
 <div id="figure-lists">
 <div id="figures" role="radiogroup" aria-label="figures"></div>
 <div id="cost-views-group" hidden><span>where the work goes:</span>
