@@ -24,7 +24,7 @@ struct ModelFile;
 struct ChapterSettings {
   // The reader's model (--model), or none: the chapter's own figures. A model has one
   // texture ("Painting a Crate"): a file's model painted with several is one Model for
-  // each (PaintedParts), all with the same vertices.
+  // each (PaintedParts), each with the vertices its triangles use.
   std::shared_ptr<const std::vector<Model>> model;
   std::string model_name;  // its file's name, for the figure's caption
   // The texture on the crates, with its mip chain; none: the project's own.
@@ -56,7 +56,7 @@ Model ModelFromFile(const cgfs::ModelFile& file);
 // `model` split into one Model per texture: a triangle's texture is `everywhere` if
 // there is one, otherwise its material's, `by_material[material]` (none: its colour).
 // Each part keeps only the vertices its triangles use.
-std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
+std::vector<Model> PaintedParts(Model model, const cgfs::ModelFile& file,
                                 const std::vector<const MipmappedTexture*>& by_material,
                                 const MipmappedTexture* everywhere);
 

@@ -92,12 +92,12 @@ std::vector<std::shared_ptr<const MipmappedTexture>> MaterialTextures(const cgfs
       shared->second.first_material = material.name;
       try {
         Texture texture = LoadTexture(material.texture);
-        texels += texture.texels.size();
-        if (texels > kMaxModelTexels) {
+        if (texels + texture.texels.size() > kMaxModelTexels) {
           shared->second.why_not = "'" + material.texture.string() +
                                    "' would take the model's textures past " +
                                    std::to_string(kMaxModelTexels) + " texels";
         } else {
+          texels += texture.texels.size();
           shared->second.texture =
               std::make_shared<const MipmappedTexture>(BuildMipChain(std::move(texture)));
         }
@@ -182,13 +182,16 @@ Model ModelFromFile(const cgfs::ModelFile& file) {
   return model;
 }
 
-std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
+std::vector<Model> PaintedParts(Model model, const cgfs::ModelFile& file,
                                 const std::vector<const MipmappedTexture*>& by_material,
                                 const MipmappedTexture* everywhere) {
+  // The geometry apart; what is left of `model` is what every part has of it.
+  const std::vector<Vec3> vertices = std::exchange(model.vertices, {});
+  const std::vector<Triangle> triangles = std::exchange(model.triangles, {});
   std::vector<Model> parts;  // in the order their textures first appear
   std::map<const MipmappedTexture*, std::size_t> part_of;  // a texture -> its part
   std::vector<std::vector<std::size_t>> triangles_of;      // a part -> its triangles
-  for (std::size_t t = 0; t < model.triangles.size(); ++t) {
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
     const int material = file.faces[t].material;
     const MipmappedTexture* texture = everywhere != nullptr ? everywhere
                                       : material >= 0
@@ -196,28 +199,29 @@ std::vector<Model> PaintedParts(const Model& model, const cgfs::ModelFile& file,
                                           : nullptr;
     const auto [part, first] = part_of.try_emplace(texture, parts.size());
     if (first) {
-      parts.push_back(Model{{}, {}, model.closed, model.specular, texture});
+      parts.push_back(model);
+      parts.back().texture = texture;
       triangles_of.emplace_back();
     }
     triangles_of[part->second].push_back(t);
   }
   // Each part keeps only the vertices its triangles use, numbered anew.
-  std::vector<int> own(model.vertices.size(), -1);  // a vertex of model's -> the part's
+  std::vector<int> own(vertices.size(), -1);  // a vertex of the model's -> the part's
   for (std::size_t p = 0; p < parts.size(); ++p) {
     for (const std::size_t t : triangles_of[p]) {
-      Triangle triangle = model.triangles[t];
+      Triangle triangle = triangles[t];
       for (int& v : triangle.v) {
         int& index = own[static_cast<std::size_t>(v)];
         if (index < 0) {
           index = static_cast<int>(parts[p].vertices.size());
-          parts[p].vertices.push_back(model.vertices[static_cast<std::size_t>(v)]);
+          parts[p].vertices.push_back(vertices[static_cast<std::size_t>(v)]);
         }
         v = index;
       }
       parts[p].triangles.push_back(triangle);
     }
     for (const std::size_t t : triangles_of[p]) {
-      for (const int v : model.triangles[t].v) {
+      for (const int v : triangles[t].v) {
         own[static_cast<std::size_t>(v)] = -1;
       }
     }

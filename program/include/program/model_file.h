@@ -49,7 +49,7 @@ struct ModelFile {
 // are split; the corners of one polygon (tinyobjloader splits a polygon of n corners in
 // up to n^3 steps); the times it changes material (usemtl; each starts a new run of
 // faces); the material libraries it names (mtllib; each read once, by its real path);
-// the materials of one library (newmtl; tinyobjloader keeps 2.7 KB for each).
+// the materials of its libraries together (newmtl; tinyobjloader keeps 2.7 KB each).
 inline constexpr std::size_t kMaxModelFileBytes = 128u << 20;
 inline constexpr std::size_t kMaxModelVertices = 1'000'000;
 inline constexpr std::size_t kMaxModelTriangles = 750'000;
