@@ -1,8 +1,8 @@
 """scripts/site --serve's server (tools/site/serve.py) against clients that misbehave:
 2 500 connections that ask and go away without reading the answer, then a request that
-must be answered within a second; a NUL byte in a path (a 400); a connection that sends
-nothing (closed by the server after its idle limit); and not a line on the server's
-standard error throughout (no traceback). Usage: check_serve_clients.py SOURCE_DIR"""
+must be answered at once (within 10 s: the stall it catches was 32 s); a NUL byte in a
+path (a 400); a connection that sends nothing (closed by the server after its idle
+limit); and not a line on the server's standard error throughout (no traceback). Usage: check_serve_clients.py SOURCE_DIR"""
 
 import os
 import socket
@@ -63,9 +63,11 @@ def main(source):
         start = time.monotonic()
         status = ask(port, "/index.html", timeout=30)
         took = time.monotonic() - start
+        # 0.01 s on a quiet machine, 1.7 s beside four CPU-bound processes; the stall this
+        # catches lasted 32 s: 10 s tells them apart however busy the machine is.
         check(
-            f"after 2 500 clients went away, a request is answered within a second ({took:.2f} s: {status})",
-            status.endswith("200 OK") and took < 1.0,
+            f"after 2 500 clients went away, a request is answered within 10 s ({took:.2f} s: {status})",
+            status.endswith("200 OK") and took < 10.0,
         )
         status = ask(port, "/a%00b")
         check(
