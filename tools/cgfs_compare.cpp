@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
                    "      image; write PNG or PPM to compare figures pixel for pixel\n";
     }
     std::cout << cgfs::Describe(comparison, actual.Width(), actual.Height())
-              << "difference image: " << difference_path << " (" << cgfs::kDifferenceLegend
+              << "difference image: " << difference_path << " (" << cgfs::DifferenceLegend()
               << ")\n";
     return comparison.passed ? 0 : 1;
   });

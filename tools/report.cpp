@@ -309,7 +309,7 @@ void WriteReport(const std::vector<ReportEntry>& entries, const fs::path& html,
        << "<p id=\"summary\"><span id=\"passed\">" << counts[0] << "</span> passed, "
        << "<span id=\"failed\">" << counts[1] + counts[3] << "</span> failed, "
        << "<span id=\"missing\">" << counts[2] << "</span> missing</p>\n"
-       << "<p>Difference images: " << Escaped(kDifferenceLegend)
+       << "<p>Difference images: " << Escaped(DifferenceLegend())
        << ". Click an image to see it at full size.</p>\n<table>\n";
   for (const ReportEntry& entry : entries) {
     page << "<tr class=\"" << VerdictName(entry.verdict) << "\"><td><h3>" << Escaped(entry.chapter)

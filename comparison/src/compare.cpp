@@ -6,20 +6,19 @@
 #include <functional>
 #include <iomanip>
 #include <map>
-#include <stdexcept>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
-
 
 namespace cgfs {
 
 namespace {
 
-constexpr Rgb8 kChangedColor{255, 170, 0};
-constexpr Rgb8 kMissingColor{230, 0, 0};
-constexpr Rgb8 kExtraColor{0, 80, 255};
-constexpr Rgb8 kRecolouredColor{170, 0, 200};
+constexpr Rgb8 kMissingColor = kDifferenceColours[0].colour;
+constexpr Rgb8 kExtraColor = kDifferenceColours[1].colour;
+constexpr Rgb8 kRecolouredColor = kDifferenceColours[2].colour;
+constexpr Rgb8 kChangedColor = kDifferenceColours[3].colour;
 
 int LargestChannelDifference(Rgb8 a, Rgb8 b) {
   return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
@@ -223,11 +222,23 @@ long long Tolerance::AllowedDifferingPixels(long long pixels) const {
   return static_cast<long long>(std::floor(differing_fraction * static_cast<double>(pixels)));
 }
 
+std::string DifferenceLegend() {
+  std::string legend;
+  for (const DifferenceColour& each : kDifferenceColours) {
+    if (!legend.empty()) {
+      legend += &each == &kDifferenceColours[3] ? "; " : ", ";
+    }
+    legend += std::string(each.name) + ": " + each.meaning;
+  }
+  return legend;
+}
+
 Comparison CompareImages(const Image& expected, const Image& actual, const Tolerance& tolerance) {
   if (expected.Width() != actual.Width() || expected.Height() != actual.Height()) {
-    throw std::invalid_argument("image sizes differ: expected " + std::to_string(expected.Width()) + "x" +
-                std::to_string(expected.Height()) + ", got " + std::to_string(actual.Width()) +
-                "x" + std::to_string(actual.Height()));
+    throw std::invalid_argument("image sizes differ: expected " + std::to_string(expected.Width()) +
+                                "x" + std::to_string(expected.Height()) + ", got " +
+                                std::to_string(actual.Width()) + "x" +
+                                std::to_string(actual.Height()));
   }
   Comparison result;
   result.pixels = static_cast<long long>(expected.Width()) * expected.Height();

@@ -166,8 +166,8 @@ EMSCRIPTEN_KEEPALIVE const char* LastError() {
 // compared with the figure drawn at that size from the chapter's own view, as cgfs-compare
 // compares an image with a golden one: 1 when they match, 0 when not, -1 with LastError().
 // ComparisonText() then says what cgfs-compare says (its numbers, verdict and diagnosis),
-// Pixels() holds the difference image, and DifferingColumn() and DifferingRow() the first
-// differing pixel (-1 when none).
+// Pixels() holds the difference image (its colours: DifferenceColours()), and
+// DifferingColumn() and DifferingRow() the first differing pixel (-1 when none).
 EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height,
                                            const std::uint8_t* rgba) {
   const cgfs::Figure* figure = FigureAt(index);
@@ -194,6 +194,15 @@ EMSCRIPTEN_KEEPALIVE int CompareWithFigure(int index, int width, int height,
 EMSCRIPTEN_KEEPALIVE const char* ComparisonText() {
   return Text(
       cgfs::Describe(comparison, comparison.difference.Width(), comparison.difference.Height()));
+}
+// The difference image's colours, one to a line: "R,G,B NAME: MEANING".
+EMSCRIPTEN_KEEPALIVE const char* DifferenceColours() {
+  std::string lines;
+  for (const cgfs::DifferenceColour& each : cgfs::kDifferenceColours) {
+    lines += std::to_string(each.colour.r) + "," + std::to_string(each.colour.g) + "," +
+             std::to_string(each.colour.b) + " " + each.name + ": " + each.meaning + "\n";
+  }
+  return Text(lines);
 }
 EMSCRIPTEN_KEEPALIVE int DifferingColumn() {
   return comparison.differing_pixels > 0 ? comparison.first_differing.column : -1;

@@ -19,7 +19,8 @@
 // It prints how long each chapter's check took on the page.
 //
 // Usage: node check_your_code.mjs REPO SITE NATIVE_BUILD [--only PART ...]
-//   PART: carried, javascript, mistakes, loop, python, card, layout, docs (all, without --only)
+//   PART: carried, javascript, mistakes, loop, marks, compare, indent, start, python, card, layout, docs
+//   (all, without --only)
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync, spawnSync} from 'node:child_process';
 import {mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
@@ -280,6 +281,130 @@ async function CheckEndlessLoopAndSyntax() {
   }
 }
 
+// A screenshot of the page as it is, when CGFS_SCREENSHOTS names a folder (to look at).
+async function Screenshot(name, element = null) {
+  if (!process.env.CGFS_SCREENSHOTS) return;
+  if (element) await browser.Evaluate(`document.getElementById('${element}').scrollIntoView()`);
+  const {data} = await browser.Send('Page.captureScreenshot', {format: 'png', captureBeyondViewport: false});
+  writeFileSync(join(process.env.CGFS_SCREENSHOTS, `${name}.png`), Buffer.from(data, 'base64'));
+}
+
+// A key pressed in the editor, with Ctrl (and Shift).
+async function PressInEditor(key, modifiers) {
+  await browser.Evaluate("document.querySelector('#code-panel .CodeMirror').CodeMirror.focus()");
+  const code = key === 'Enter' ? {key: 'Enter', code: 'Enter', windowsVirtualKeyCode: 13} : {key, code: `Key${key.toUpperCase()}`};
+  await browser.Send('Input.dispatchKeyEvent', {type: 'rawKeyDown', modifiers, ...code});
+  await browser.Send('Input.dispatchKeyEvent', {type: 'keyUp', modifiers, ...code});
+}
+
+// Ctrl+Enter checks; each function's line gets a ✓ or ✗, a ✗ a click away from its
+// report; "check this function" checks the one the cursor is in alone (the same report
+// as --function); a syntax error's line is marked.
+async function CheckEditorMarks() {
+  const ours = readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8');
+  const wrong = ours.replace('y * Vh / Ch', 'y * Vh / Cw');
+  await OpenPanel('02-basic-rays', 'javascript');
+  await Type(wrong);
+  await browser.Evaluate(`delete ${$('code-report', 'dataset.done')}`);
+  await PressInEditor('Enter', 2);  // Ctrl
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, 'Ctrl+Enter\'s check', 60);
+  const marks = await browser.Evaluate("document.querySelector('#code-panel .CodeMirror').dataset.marks");
+  const report = await browser.Evaluate($('code-report', 'textContent'));
+  const wanted = [...report.matchAll(/^ {2}(\w+) +(passed|FAILED)/gm)].map(([, name, said]) => `${name}:${said === 'passed' ? 'pass' : 'fail'}`)
+    .join(' ');
+  if (!/CanvasToViewport:fail/.test(wanted) || !/TraceRay:pass/.test(wanted)) Fail(`Ctrl+Enter, y scaled by the width: the report is\n${report}`);
+  const sorted = (text) => (text ?? '').split(' ').sort().join(' ');
+  if (sorted(marks) !== sorted(wanted)) Fail(`Ctrl+Enter, y scaled by the width: the editor's marks are "${marks}", not "${wanted}"`);
+  const line = wrong.split('\n').findIndex((each) => each.startsWith('function CanvasToViewport'));
+  const markLine = await browser.Evaluate(`(() => { const e = document.querySelector('#code-panel .CodeMirror').CodeMirror;
+    for (let i = 0; i < e.lineCount(); ++i) { const m = e.lineInfo(i).gutterMarkers?.['code-marks'];
+      if (m && m.textContent === '✗') return i; } return -1; })()`);
+  if (markLine !== line) Fail(`the ✗ is on line ${markLine + 1}, CanvasToViewport on ${line + 1}`);
+  await browser.Evaluate(`document.querySelector('#code-panel .CodeMirror .code-mark.fail').click()`);
+  await browser.WaitFor(`document.querySelector('#code-report span.lit')?.dataset.function === 'CanvasToViewport'`,
+    'the ✗ showing its lines of the report', 5);
+  await Screenshot('marks-1280');
+  console.log(`Ctrl+Enter checked; the editor's marks: ${marks}; the ✗ on CanvasToViewport's line shows its report`);
+  // Check this function: the cursor in TraceRay, its cases alone, as --function says.
+  const file = join(work, 'one-function', 'basic-rays.js');
+  execFileSync('mkdir', ['-p', join(work, 'one-function')]);
+  writeFileSync(file, wrong);
+  const traceLine = wrong.split('\n').findIndex((each) => each.startsWith('function TraceRay'));
+  await browser.Evaluate(`document.querySelector('#code-panel .CodeMirror').CodeMirror.setCursor(${traceLine + 2}, 0)`);
+  const button = await browser.Evaluate($('code-check-one', 'textContent'));
+  if (button !== 'Check TraceRay') Fail(`the cursor in TraceRay: the button says "${button}"`);
+  await browser.Evaluate(`delete ${$('code-report', 'dataset.done')}`);
+  await PressInEditor('Enter', 2 | 8);  // Ctrl+Shift
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, 'Shift+Ctrl+Enter\'s check', 60);
+  const one = await browser.Evaluate($('code-report', 'textContent'));
+  const cli = spawnSync('node', [join(repo, 'tools', 'check-functions', 'check-functions.js'), '02', file, '--function', 'TraceRay'],
+    {encoding: 'utf8'}).stdout.split('\n').filter((each) => each && !each.startsWith('note: ')).join('\n');
+  if (!/^TraceRay: /m.test(one) || /CanvasToViewport/.test(one)) Fail(`check TraceRay alone: the page says\n${one}`);
+  SameReport('check TraceRay alone', one, cli, '--function TraceRay\'s');
+  console.log(`Shift+Ctrl+Enter in TraceRay checked it alone: "${one.split('\n').at(-1)}", as --function TraceRay says`);
+  // A syntax error: a ✗ on its line, the line tinted.
+  await Type('function CanvasToViewport(x, y) {\n  return [x,, y;\n}\n');
+  await Check('a syntax error, marked');
+  const error = await browser.Evaluate(`[document.querySelector('#code-panel .CodeMirror').dataset.marks,
+    document.querySelectorAll('#code-panel .code-error-line').length]`);
+  if (error[0] !== 'line 2:error' || error[1] < 1) Fail(`a syntax error on line 2: the editor's marks "${error[0]}", ${error[1]} lines tinted`);
+  else console.log('a syntax error: a ✗ on its line, the line tinted');
+}
+
+// A draw that differs: the difference's legend (the comparison library's colours), a
+// magnifier on the first differing pixel, one picture with a slider, and the sentence
+// that says why the cases pass when the picture does not.
+async function CheckComparison() {
+  await browser.Send('Emulation.setDeviceMetricsOverride', {width: 1280, height: 900, deviceScaleFactor: 1, mobile: false});
+  const ours = readFileSync(ReferenceOf('10-scene-rendering', 'javascript'), 'utf8');
+  await OpenPanel('10-scene-rendering', 'javascript');
+  await Type(ours.replace('{ x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) }', '{ x: x * Cw / Vw, y: y * Ch / Vh }'));
+  await Check('canvas points not truncated');
+  const drawn = await Draw('fig-10-2');
+  const legend = await browser.Evaluate(`[...document.querySelectorAll('#code-legend li')].map((li) =>
+    (li.querySelector('.swatch')?.style.background ?? '') + ' ' + li.textContent).join('; ')`);
+  for (const [colour, meaning] of [['rgb(230, 0, 0)', 'red: in ours only (missing)'], ['rgb(0, 80, 255)', 'blue: in yours only (extra)'],
+    ['rgb(170, 0, 200)', 'purple: in both, other colour'], ['rgb(255, 170, 0)', 'orange: within the tolerance']]) {
+    if (!legend.includes(`${colour} ${meaning}`)) Fail(`the difference's legend has no "${colour} ${meaning}": ${legend}`);
+  }
+  if (!/the first differing pixel, column \d+, row \d+/.test(await browser.Evaluate($('code-zoom-where', 'textContent')))) {
+    Fail(`the magnifier is not on the first differing pixel: ${await browser.Evaluate($('code-zoom-where', 'textContent'))}`);
+  }
+  const teach = await browser.Evaluate($('code-teach', 'textContent'));
+  if (drawn.verdict !== 'fail' || !/^Every case passed, yet the picture differs/.test(teach)) {
+    Fail(`cases passed, the picture differs: the page says "${teach}" (${drawn.verdict})`);
+  }
+  // The magnifier follows a click; the slider's picture is ours right of it and the
+  // reader's left of it.
+  await browser.Evaluate(`(() => { const c = document.getElementById('code-difference'); const r = c.getBoundingClientRect();
+    c.dispatchEvent(new MouseEvent('click', {clientX: r.left + c.clientLeft + c.clientWidth / 4 + 0.1,
+      clientY: r.top + c.clientTop + c.clientHeight / 2 + 0.1, bubbles: true})); })()`);
+  const where = await browser.Evaluate($('code-zoom-where', 'textContent'));
+  // (within 2 pixels: a CSS pixel of the shown picture is 3 of the figure's)
+  const [, column, row] = /the pixel clicked, column (\d+), row (\d+)/.exec(where) ?? [];
+  if (!(Math.abs(column - 150) <= 2 && Math.abs(row - 300) <= 2)) Fail(`a click a quarter across the difference: "${where}"`);
+  await Screenshot('compare-three-1280', 'code-drawing');
+  await browser.Evaluate(`(() => { const r = document.querySelector('input[name="code-view"][value="one"]'); r.checked = true;
+    r.dispatchEvent(new Event('change')); const w = document.getElementById('code-wipe'); w.value = 25;
+    w.dispatchEvent(new Event('input')); })()`);
+  const sides = await browser.Evaluate(`(() => { const d = document.getElementById('code-drawing').drawn;
+    const one = document.getElementById('code-overlay').getContext('2d').getImageData(0, 0, d.width, d.height).data;
+    const ours = document.getElementById('code-ours').getContext('2d').getImageData(0, 0, d.width, d.height).data;
+    let left = 0, right = 0;
+    for (let row = 0; row < d.height; ++row) for (let column = 0; column < d.width; ++column) {
+      const at = (row * d.width + column) * 4;
+      const same = (a) => a[at] === one[at] && a[at + 1] === one[at + 1] && a[at + 2] === one[at + 2];
+      if (column < d.width / 4 - 2 && !same(d.pixels)) ++left;
+      if (column > d.width / 4 + 2 && !same(ours)) ++right;
+    }
+    return [left, right]; })()`);
+  if (sides[0] || sides[1]) Fail(`the slider at a quarter: ${sides[0]} pixels left of it are not yours, ${sides[1]} right of it not ours`);
+  await Screenshot('compare-one-1280', 'code-drawing');
+  console.log(`a draw that differs: the legend says ${legend.split('; ').length} colours as the comparison library does, ` +
+              `the magnifier is on the first differing pixel and follows a click, the slider shows yours left and ours right; "${teach.slice(0, 60)}…"`);
+  await browser.Send('Emulation.clearDeviceMetricsOverride');
+}
+
 // Chapter 2 written, then chapter 3 opened: chapter 2's code carried forward, with
 // chapter 3's new function to write and its changed one named.
 async function CheckCarriedForward() {
@@ -339,6 +464,26 @@ async function CheckLayout() {
       if (!inside) Fail(`${chapter}: at the page's ${where}, the caption, status or figure is outside a 1280 x 900 window`);
     }
   }
+  // Writing on a wide screen: the chapter's text beside the editor, both in view at the
+  // page's top and bottom; on a phone, the editor alone.
+  const sideBySide = `(() => { document.getElementById('tab-code').click();
+    const box = (selector) => document.querySelector(selector).getBoundingClientRect();
+    const seen = (r) => r.width > 0 && r.top < innerHeight && r.bottom > 0 && r.left >= 0 && r.right <= innerWidth;
+    const at = (where) => { window.scrollTo(0, where); const text = box('#readme'), code = box('#code-panel .CodeMirror');
+      return seen(text) && seen(code) && text.right <= code.left; };
+    return { top: at(0), bottom: at(document.documentElement.scrollHeight), figures: box('#live').width,
+      width: document.documentElement.scrollWidth }; })()`;
+  for (const chapter of ['05-raytracer-extensions', '13-shading']) {
+    await OpenPanel(chapter, 'javascript');
+    const seen = await browser.Evaluate(sideBySide);
+    if (!seen.top || !seen.bottom || seen.figures !== 0 || seen.width > 1280) {
+      Fail(`${chapter}, writing at 1280 x 900: the text beside the editor at the top ${seen.top}, at the bottom ${seen.bottom}; ` +
+           `the figures ${seen.figures} px wide; the page ${seen.width} px`);
+    }
+  }
+  await browser.Evaluate('window.scrollTo(0, 0)');
+  await Screenshot('writing-1280');
+  console.log('writing at 1280 x 900: the chapter\'s text beside the editor, both in view at the page\'s top and bottom');
   // A 390 x 844 phone: nothing wider than the screen (a wide table or code scrolls in
   // its own box; chapter 5's page was 833 px wide, 14's 432).
   await browser.Send('Emulation.setDeviceMetricsOverride', {width: 390, height: 844, deviceScaleFactor: 1, mobile: true});
@@ -348,6 +493,10 @@ async function CheckLayout() {
     const width = await browser.Evaluate('document.documentElement.scrollWidth');
     if (width > 390) wide.push(`${chapter} ${width} px`);
   }
+  await OpenPanel('05-raytracer-extensions', 'javascript');
+  const phone = await browser.Evaluate(`[document.getElementById('readme').hidden, document.documentElement.scrollWidth]`);
+  if (!phone[0] || phone[1] > 390) Fail(`writing on a 390 x 844 phone: the text hidden ${phone[0]}, the page ${phone[1]} px wide`);
+  await Screenshot('writing-390', 'code-panel');
   await browser.Send('Emulation.clearDeviceMetricsOverride');
   if (wide.length) Fail(`on a 390 x 844 phone, pages wider than the screen: ${wide.join(', ')}`);
   else console.log('no chapter page is wider than a 390 x 844 phone');
@@ -381,6 +530,8 @@ const parts = {
   javascript: () => CheckReferences('javascript', Chapters(), () => true),
   mistakes: CheckMistakes,
   loop: CheckEndlessLoopAndSyntax,
+  marks: CheckEditorMarks,
+  compare: CheckComparison,
   indent: CheckPythonIndent,
   start: CheckPythonStart,
   python: async () => {

@@ -107,7 +107,8 @@ void CompareWithGolden(const std::string& chapter, const std::string& name, cons
     UpdateReport(output);
     FAIL(Describe(comparison, actual.Width(), actual.Height())
          << "  actual image:     " << actual_file.string() << "\n"
-         << "  difference image: " << difference_file.string() << " (" << kDifferenceLegend << ")\n"
+         << "  difference image: " << difference_file.string() << " (" << DifferenceLegend()
+         << ")\n"
          << "  every failed figure side by side: " << (output / "report.html").string());
   }
   // A pass clears what an earlier failure of this figure left behind.

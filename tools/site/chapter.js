@@ -275,20 +275,27 @@ function ListFigures(described) {
       (figures.length > 9 ? ': the list scrolls' : ''));
 }
 
-// The other column's two tabs: the chapter's README, and the reader's own code.
+// The other column's two tabs: the chapter's README, and the reader's own code. On a
+// wide screen the code's tab shows the README beside the editor, in place of the
+// figures (site.css: main[data-tab="tab-code"]); on a narrow one, the editor alone.
 function Tabs() {
   const tabs = [['tab-readme', 'readme'], ['tab-code', 'your-code']];
-  const show = (chosen) => {
-    for (const [tab, panel] of tabs) {
-      document.getElementById(tab).setAttribute('aria-selected', tab === chosen);
+  const wide = matchMedia('(min-width: 1100px)');
+  let chosen = 'tab-readme';
+  const show = (tab) => {
+    chosen = tab;
+    for (const [each, panel] of tabs) {
+      document.getElementById(each).setAttribute('aria-selected', each === tab);
       const element = document.getElementById(panel);
-      if (element) element.hidden = tab !== chosen;
+      if (element) element.hidden = each !== tab && !(panel === 'readme' && wide.matches);
     }
-    document.dispatchEvent(new CustomEvent('cgfs-tab', { detail: chosen }));
+    document.querySelector('main.chapter').dataset.tab = tab;
+    document.dispatchEvent(new CustomEvent('cgfs-tab', { detail: tab }));
   };
   for (const [tab] of tabs) document.getElementById(tab).addEventListener('click', () => show(tab));
+  wide.addEventListener('change', () => show(chosen));
   if (!document.getElementById('your-code')) document.getElementById('tabs').hidden = true;
-  if (location.hash === '#your-code') show('tab-code');
+  show(location.hash === '#your-code' ? 'tab-code' : 'tab-readme');
 }
 
 async function Start() {

@@ -13,8 +13,9 @@
 //                            typed; the view, or a problem
 //   compare index width height rgba
 //                            a reader's image of the figure compared with ours as
-//                            cgfs-compare compares: verdict, text, difference image and
-//                            first differing pixel (program/web/web_entry.cpp)
+//                            cgfs-compare compares: verdict, text, difference image,
+//                            what its colours mean and the first differing pixel
+//                            (program/web/web_entry.cpp)
 //   options files words      the chapter's figures made anew with the options a command
 //                            line would give (words: --model house.obj), the files they
 //                            name put where the chapter's code reads them; the lines
@@ -139,7 +140,11 @@ const operations = {
     if (verdict < 0) return { problem: Text(module, module._LastError()) };
     const difference = Pixels(module, bytes);
     return { answer: { passed: verdict === 1, text: Text(module, module._ComparisonText()), difference,
-      column: module._DifferingColumn(), row: module._DifferingRow() }, transfer: [difference.buffer] };
+      colours: Text(module, module._DifferenceColours()).trim().split('\n').map((line) => {
+        const [, rgb, name, meaning] = /^(\S+) ([^:]+): (.*)$/.exec(line);
+        return { rgb: `rgb(${rgb})`, name, meaning };
+      }), column: module._DifferingColumn(), row: module._DifferingRow() },
+    transfer: [difference.buffer] };
   },
 };
 

@@ -69,7 +69,7 @@ SITE_MODELS = {
 # The scripts of a chapter page's "Your code" panel, in order.
 YOUR_CODE_SCRIPTS = ["vendor/codemirror/codemirror.js", "vendor/codemirror/javascript.js",
                      "vendor/codemirror/python.js", "vendor/check.js", "vendor/cases.js", "code_runner.js",
-                     "yourcode.js"]
+                     "compare_view.js", "editor_marks.js", "yourcode.js"]
 
 
 class SiteError(Exception):
@@ -354,13 +354,14 @@ are decoded by the browser, the rest as the program does.</p>
         return f"""<section id="your-code" role="tabpanel" hidden data-title="{html.escape(title)}">
 <div id="code-panel">
 <p class="code-intro">Write this chapter's functions yourself, in JavaScript or Python, under the book's names.
-<b>Check</b> runs the chapter's cases on them, with the messages of the command line's checker
+<b>Check</b> (<kbd>Ctrl</kbd>+<kbd>Enter</kbd>) runs the chapter's cases on them, with the messages of the command line's checker
 (<a href="{self.link(f"{chapter}/index.html", "docs/students.md")}#3-on-the-chapters-page">docs/students.md</a>);
 <b>Draw</b> draws a figure with them beside ours. Your code runs in this browser, in a worker of its own, and is
 kept here, for this chapter and language: nothing is sent anywhere.</p>
 <div class="code-bar">
 <select id="code-language" aria-label="the language you write in"><option value="javascript">JavaScript</option><option value="python">Python</option></select>
-<button type="button" id="code-check">Check</button>
+<button type="button" id="code-check" title="every case of the chapter (Ctrl+Enter)">Check</button>
+<button type="button" id="code-check-one" disabled>Check one function</button>
 <span id="code-draw-group"><select id="code-figure" aria-label="the figure to draw"></select> <button type="button" id="code-draw">Draw</button></span>
 <button type="button" id="code-stop" hidden>Stop</button>
 </div>
@@ -374,10 +375,30 @@ its figures take the whole pipeline (RenderScene and the rest), which the cases 
 <p id="code-status" role="status"></p>
 <pre id="code-report"></pre>
 <div id="code-drawing" hidden>
-<div class="code-pictures">
+<p id="code-teach"></p>
+<div class="code-bar" role="radiogroup" aria-label="how to compare">
+<label><input type="radio" name="code-view" value="three" checked> ours, yours and the difference</label>
+<label><input type="radio" name="code-view" value="one"> one picture, a slider between them</label>
+</div>
+<div class="code-pictures" id="code-three">
 <figure><canvas id="code-ours"></canvas><figcaption>ours</figcaption></figure>
 <figure><canvas id="code-yours"></canvas><figcaption>yours</figcaption></figure>
 <figure><canvas id="code-difference"></canvas><figcaption>the difference</figcaption></figure>
+</div>
+<div id="code-one" hidden>
+<canvas id="code-overlay"></canvas>
+<p class="code-bar"><label>yours <input type="range" id="code-wipe" min="0" max="100" value="50"
+aria-label="where yours ends and ours begins"> ours</label>
+<label><input type="checkbox" id="code-blink"> blink</label> <span id="code-one-says"></span></p>
+</div>
+<ul id="code-legend" aria-label="the difference's colours"></ul>
+<div id="code-zoom">
+<p id="code-zoom-where"></p>
+<div class="code-zoom-pictures">
+<figure><canvas id="code-zoom-ours"></canvas><figcaption>ours</figcaption></figure>
+<figure><canvas id="code-zoom-yours"></canvas><figcaption>yours</figcaption></figure>
+<figure><canvas id="code-zoom-difference"></canvas><figcaption>the difference</figcaption></figure>
+</div>
 </div>
 <pre id="code-comparison"></pre>
 </div>
@@ -556,8 +577,8 @@ programs, run the tests and compare your own images with these.</p>
         self.folder.write("vendor/pyodide.js", f"var CGFS_PYODIDE = {json.dumps(assets)};\n")
 
     def build(self):
-        for name in ("chapter.js", "index.js", "figures_client.js", "models.js", "site.css", "code_runner.js",
-                     "yourcode.js"):
+        own_scripts = [name for name in YOUR_CODE_SCRIPTS if not name.startswith("vendor/")]
+        for name in ("chapter.js", "index.js", "figures_client.js", "models.js", "site.css", *own_scripts):
             self.folder.write(name, (SITE_FILES / name).read_bytes())
         self.model_scripts()
         self.vendor_sources()

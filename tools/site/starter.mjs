@@ -49,13 +49,17 @@ export function previousChapter(chapter, files) {
   return kept.at(-1) ?? null;
 }
 
-// Whether `code` defines a top-level function `name` (a declaration, or a name given a
-// function).
-export function defines(code, name, language) {
+// The line (from 0) where `code` defines a top-level function `name` (a declaration, or
+// a name given a function), or -1.
+export function definitionLine(code, name, language) {
   const pattern = language === 'python' ? `^def\\s+${name}\\s*\\(`
     : `^(?:export\\s+)?(?:async\\s+)?(?:function\\s*\\*?\\s*${name}\\s*\\(|(?:const|let|var)\\s+${name}\\s*=)`;
-  return new RegExp(pattern, 'm').test(code);
+  const found = new RegExp(pattern, 'm').exec(code);
+  return found ? code.slice(0, found.index).split('\n').length - 1 : -1;
 }
+
+// Whether `code` defines a top-level function `name`.
+export const defines = (code, name, language) => definitionLine(code, name, language) >= 0;
 
 function comment(lines, language) {
   const mark = language === 'python' ? '#' : '//';

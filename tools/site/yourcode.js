@@ -22,7 +22,10 @@ const yourCode = {
   language: 'javascript',
   file: '',           // the name the report gives the code: the file opened, or the chapter's
   running: null,      // the PageRunner of a check under way
+  marks: null,        // the EditorMarks a check leaves (editor_marks.js)
   figures: null,      // a FiguresWorker for ours and the comparison, made on the first draw
+  comparison: null,   // the ComparisonView of a draw (compare_view.js)
+  lastCheck: null,    // { code, failed } of the last check that ran to its end
 };
 
 const $ = (id) => document.getElementById(id);
@@ -75,44 +78,93 @@ function Save() {
 }
 
 function Busy(what) {
-  for (const id of ['code-check', 'code-draw', 'code-language', 'code-open-button', 'code-start-over']) {
+  $('code-panel').dataset.busy = what ?? '';
+  for (const id of ['code-check', 'code-check-one', 'code-draw', 'code-language', 'code-open-button', 'code-start-over']) {
     $(id).disabled = what !== null;
   }
   $('code-stop').hidden = what === null;
-  $('code-panel').dataset.busy = what ?? '';
+  if (what === null) ShowFunctionAtCursor();  // enabled only in one of the chapter's functions
 }
 
 function Status(text) {
   $('code-status').textContent = text;
 }
 
-// Check: the chapter's cases, and those of the chapters it keeps, on the reader's code.
-async function Check() {
+// The report, a line to a span: a function's first line names it (data-function), for
+// the editor's marks to show.
+function ShowReport(lines) {
+  const names = new Set(CGFS_CHECK.functionsOf(CGFS_CHECK.sections(yourCode.chapter, yourCode.files)));
+  $('code-report').replaceChildren(...lines.flatMap((line, i) => {
+    const span = document.createElement('span');
+    span.textContent = line;
+    const name = /^ {2}(\w+) /.exec(line)?.[1];
+    if (names.has(name)) span.dataset.function = name;
+    return i === 0 ? [span] : ['\n', span];
+  }));
+}
+
+// A function's first failed lines in the report, scrolled into view and lit.
+function ShowInReport(name) {
+  const line = [...$('code-report').querySelectorAll('span[data-function]')]
+    .find((span) => span.dataset.function === name && /FAILED|raised|ran out|did not/.test(span.textContent)) ??
+    $('code-report').querySelector(`span[data-function="${name}"]`);
+  if (!line) return;
+  line.scrollIntoView({ block: 'center', behavior: 'smooth' });
+  line.classList.remove('lit');
+  void line.offsetWidth;  // restarts the light's animation
+  line.classList.add('lit');
+}
+
+// The chapter's function the cursor is in, for "check this function".
+function FunctionAtCursor() {
+  const names = CGFS_CHECK.functionsOf(CGFS_CHECK.sections(yourCode.chapter, yourCode.files));
+  return yourCode.marks.FunctionAtCursor(names, yourCode.language);
+}
+
+function ShowFunctionAtCursor() {
+  const name = FunctionAtCursor();
+  $('code-check-one').textContent = name ? `Check ${name}` : 'Check one function';
+  $('code-check-one').title = name ? `${name}'s cases alone (Shift+Ctrl+Enter), as --function ${name} does`
+    : 'Put the cursor in one of the chapter\'s functions to check it alone';
+  $('code-check-one').dataset.function = name ?? '';
+  if (!$('code-panel').dataset.busy) $('code-check-one').disabled = !name;
+}
+
+// Check: the chapter's cases, and those of the chapters it keeps, on the reader's code;
+// only: one function's cases alone (as --function NAME).
+async function Check(only = null) {
   const { chapter, files, language } = yourCode;
+  if (yourCode.running || $('code-panel').dataset.busy) return;
   Save();
   Busy('check');
   $('code-report').textContent = '';
   $('code-report').dataset.failed = '';
-  const list = CGFS_CHECK.sections(chapter, files);
+  yourCode.marks.Clear();
+  const list = CGFS_CHECK.sections(chapter, files).map((section) => (only === null ? section
+    : { ...section, entries: section.entries.filter((entry) => entry.function === only) }));
   const totalCases = list.flatMap((section) => section.entries).reduce((n, entry) => n + entry.cases.length, 0);
   const runner = new PageRunner({ language, code: yourCode.editor.getValue(), file: yourCode.file,
     timeLimit: CGFS_CHECK.CASE_LIMIT, totalCases, onStatus: Status });
   yourCode.running = runner;
   const start = performance.now();
   try {
-    const { lines, failed } = await CGFS_CHECK.check({ chapter, files, runner, file: yourCode.file });
-    $('code-report').textContent = lines.join('\n');
+    const { lines, failed, records } = await CGFS_CHECK.check({ chapter, files, runner, file: yourCode.file,
+      only: only === null ? null : { function: only } });
+    ShowReport(lines);
+    yourCode.marks.ShowChecked(records, language);
     $('code-report').dataset.failed = failed ? 'yes' : 'no';
     const checked = (Date.now() - runner.started) / 1000;
     if (runner.ended && yourCode.running !== runner) {
       Status(`Stopped after ${checked.toFixed(1)} s: the cases not run are not checked.`);
       return;
     }
+    if (only === null) yourCode.lastCheck = { code: runner.code, failed };
     Status(`${failed ? 'Something to fix' : 'Every case passed'}: checked in ${checked.toFixed(2)} s` +
            (language === 'python' ? ` (${((performance.now() - start) / 1000).toFixed(1)} s with starting Python)` : ''));
   } catch (error) {
     $('code-report').textContent = error instanceof CGFS_CHECK.CheckError ? error.message
       : `The check could not run: ${error.message ?? error}`;
+    yourCode.marks.ShowError($('code-report').textContent, yourCode.file);
     $('code-report').dataset.failed = 'yes';
     Status(yourCode.running ? 'Your code could not be checked.' : 'Stopped.');
   } finally {
@@ -142,22 +194,23 @@ async function Figures() {
   return yourCode.figures;
 }
 
-function PutOn(canvas, pixels, width, height) {
-  canvas.width = width;
-  canvas.height = height;
-  canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(pixels), width, height), 0, 0);
-}
-
-// A ring around the first differing pixel, on a picture.
-function Mark(canvas, column, row) {
-  const context = canvas.getContext('2d');
-  context.lineWidth = Math.max(2, canvas.width / 150);
-  for (const [color, radius] of [['#fff', 14], ['#e00', 12]]) {
-    context.strokeStyle = color;
-    context.beginPath();
-    context.arc(column + 0.5, row + 0.5, radius * canvas.width / 600, 0, 2 * Math.PI);
-    context.stroke();
+// What a draw's verdict and the last check of the same code say together, when they
+// seem to disagree: a sentence, or ''.
+function Teaching(passed) {
+  const checked = yourCode.lastCheck;
+  if (!checked || checked.code !== yourCode.editor.getValue()) {
+    return passed ? '' : 'Check your code (Ctrl+Enter) to see which of your functions the difference may come from.';
   }
+  if (passed && checked.failed) {
+    return 'The picture is the same as ours, yet your last check failed cases: the cases try what one picture may ' +
+      'not show (another canvas size, a point off the canvas, a value the picture rounds away). The report above ' +
+      'names them.';
+  }
+  if (!passed && !checked.failed) {
+    return 'Every case passed, yet the picture differs: the cases try your functions one by one; the picture also ' +
+      'takes the code around them (how they are called, the scene set up) and any function the cases do not cover.';
+  }
+  return '';
 }
 
 // Draw: the chosen figure with the reader's functions, beside ours and their difference,
@@ -194,13 +247,9 @@ async function Draw() {
       Status(`${name} could not be compared: ${ours.problem ?? compared.problem}`);
       return;
     }
-    PutOn($('code-ours'), ours.pixels, width, height);
-    PutOn($('code-yours'), drawn.pixels, width, height);
-    PutOn($('code-difference'), compared.difference, width, height);
-    if (compared.column >= 0) {
-      Mark($('code-yours'), compared.column, compared.row);
-      Mark($('code-difference'), compared.column, compared.row);
-    }
+    yourCode.comparison.Show({ ours: ours.pixels, yours: drawn.pixels, difference: compared.difference, width, height,
+      first: { column: compared.column, row: compared.row }, colours: compared.colours });
+    $('code-teach').textContent = Teaching(compared.passed);
     const notes = compared.passed ? [] : drawn.notes ?? [];
     $('code-comparison').textContent = `${name}, drawn with your functions, compared with ours:\n${compared.text}` +
       notes.map((note) => `${note}\n`).join('');
@@ -211,6 +260,11 @@ async function Draw() {
   } finally {
     Busy(null);
   }
+}
+
+function CheckAtCursor() {
+  const name = FunctionAtCursor();
+  if (name) Check(name);
 }
 
 function Stop() {
@@ -272,15 +326,24 @@ function ListDrawings() {
 function StartYourCode() {
   yourCode.editor = CodeMirror.fromTextArea($('code-editor'), {
     lineNumbers: true, indentUnit: 2, tabSize: 8, indentWithTabs: false, viewportMargin: 20,
-    extraKeys: { Tab: (editor) => editor.execCommand(editor.somethingSelected() ? 'indentMore' : 'insertSoftTab') },
+    gutters: ['code-marks', 'CodeMirror-linenumbers'],
+    extraKeys: {
+      Tab: (editor) => editor.execCommand(editor.somethingSelected() ? 'indentMore' : 'insertSoftTab'),
+      'Ctrl-Enter': () => Check(), 'Cmd-Enter': () => Check(),
+      'Shift-Ctrl-Enter': CheckAtCursor, 'Shift-Cmd-Enter': CheckAtCursor,
+    },
   });
+  yourCode.marks = new EditorMarks(yourCode.editor, ShowInReport);
+  yourCode.editor.on('cursorActivity', ShowFunctionAtCursor);
   let saving = null;
   yourCode.editor.on('change', () => { clearTimeout(saving); saving = setTimeout(Save, 500); });
   const language = Stored('cgfs-code:language') === 'python' ? 'python' : 'javascript';
   ShowCode(language, OpeningCode(language));
   ListDrawings();
   $('code-language').addEventListener('change', (event) => ChooseLanguage(event.target.value));
-  $('code-check').addEventListener('click', Check);
+  $('code-check').addEventListener('click', () => Check());
+  $('code-check-one').addEventListener('click', CheckAtCursor);
+  ShowFunctionAtCursor();
   $('code-draw').addEventListener('click', Draw);
   $('code-stop').addEventListener('click', Stop);
   $('code-download').addEventListener('click', Download);
@@ -290,6 +353,7 @@ function StartYourCode() {
   window.addEventListener('beforeunload', Save);
   // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
   document.addEventListener('cgfs-tab', ({ detail }) => { if (detail === 'tab-code') yourCode.editor.refresh(); });
+  yourCode.comparison = new ComparisonView();
   $('code-panel').dataset.ready = 'yes';
 }
 

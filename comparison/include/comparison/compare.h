@@ -44,14 +44,28 @@ struct Comparison {
   // what happened, in words, and where to look.
   std::string diagnosis;
   // The expected image faded to pale grey, with the changed pixels in the colours
-  // of kDifferenceLegend.
+  // of kDifferenceColours.
   Image difference;
 };
 
-// What the colours of Comparison::difference mean.
-inline constexpr char kDifferenceLegend[] =
-    "red: in ours only (missing), blue: in yours only (extra), purple: in both, other colour; "
-    "orange: within the tolerance";
+// The colours of Comparison::difference: each with its name and what it means. The
+// first three are the differing pixels by kind, the last the changed pixels within the
+// tolerance.
+struct DifferenceColour {
+  Rgb8 colour;
+  const char* name;
+  const char* meaning;
+};
+inline constexpr DifferenceColour kDifferenceColours[] = {
+    {{230, 0, 0}, "red", "in ours only (missing)"},
+    {{0, 80, 255}, "blue", "in yours only (extra)"},
+    {{170, 0, 200}, "purple", "in both, other colour"},
+    {{255, 170, 0}, "orange", "within the tolerance"},
+};
+
+// The colours in words: "red: in ours only (missing), blue: ..., purple: ...; orange:
+// within the tolerance".
+std::string DifferenceLegend();
 
 // Throws std::invalid_argument when the sizes differ.
 Comparison CompareImages(const Image& expected, const Image& actual,
