@@ -19,7 +19,7 @@
 // It prints how long each chapter's check took on the page.
 //
 // Usage: node check_your_code.mjs REPO SITE NATIVE_BUILD [--only PART ...]
-//   PART: carried, javascript, mistakes, loop, marks, compare, indent, start, python, card, layout, docs
+//   PART: carried, javascript, mistakes, loop, marks, keep, compare, indent, start, python, card, layout, docs
 //   (all, without --only)
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync, spawnSync} from 'node:child_process';
@@ -405,6 +405,51 @@ async function CheckComparison() {
   await browser.Send('Emulation.clearDeviceMetricsOverride');
 }
 
+// Keeping one's work: the code is there after a reload; a link carries it to a page
+// whose editor held other code (one Ctrl+Z brings that back); a broken link says so in
+// one line and leaves the reader's code; the index says which functions pass.
+async function CheckKeep() {
+  const ours = readFileSync(ReferenceOf('02-basic-rays', 'javascript'), 'utf8');
+  const wrong = ours.replace('y * Vh / Ch', 'y * Vh / Cw');
+  const editor = "document.querySelector('#code-panel .CodeMirror').CodeMirror";
+  await OpenPanel('02-basic-rays', 'javascript');
+  await Type(wrong);
+  await Check('the code to keep');
+  await OpenPanel('02-basic-rays', 'javascript');  // a reload
+  if (await browser.Evaluate(`${editor}.getValue()`) !== wrong) Fail('the code typed is not in the editor after a reload');
+  await browser.Evaluate("document.getElementById('code-link-button').click()");
+  await browser.WaitFor(`${$('code-link', 'value')}.includes('#code=javascript:')`, 'the link', 10);
+  const link = await browser.Evaluate($('code-link', 'value'));
+  await Type('// something else\n');
+  await browser.Evaluate('window.dispatchEvent(new Event("beforeunload"))');
+  await browser.Open(`02-basic-rays/index.html${link.slice(link.indexOf('#'))}`);
+  await browser.WaitFor(`${$('code-panel', 'dataset.ready')} === 'yes'`, 'the linked page\'s panel');
+  const opened = await browser.Evaluate(`[${editor}.getValue(), ${$('your-code', 'hidden')},
+    (${editor}.undo(), ${editor}.getValue())]`);
+  if (opened[0] !== wrong || opened[1] !== false || opened[2] !== '// something else\n') {
+    Fail(`the link (${link.length} characters): the editor has ${JSON.stringify(opened[0].slice(0, 60))}, the code's tab hidden ` +
+         `${opened[1]}, after Ctrl+Z ${JSON.stringify(opened[2].slice(0, 60))}`);
+  } else {
+    console.log(`a link of ${link.length} characters carried ${wrong.length} characters of code; Ctrl+Z brought back the editor's own`);
+  }
+  await browser.Open('02-basic-rays/index.html#code=javascript:AAAA-broken');
+  await browser.WaitFor(`${$('code-panel', 'dataset.ready')} === 'yes'`, 'the broken link\'s panel');
+  const broken = await browser.Evaluate(`[${$('code-status', 'textContent')}, ${editor}.getValue()]`);
+  if (!/^This link's code could not be read \(/.test(broken[0]) || broken[1] !== '// something else\n') {
+    Fail(`a broken link: the page says "${broken[0]}", the editor has ${JSON.stringify(broken[1].slice(0, 60))}`);
+  }
+  await browser.Open('index.html');
+  const progress = await browser.Evaluate(`[...document.querySelectorAll('p.progress')].map((p) =>
+    p.closest('td').querySelector('canvas').dataset.chapter + ': ' + p.textContent)`);
+  const line = progress.find((each) => each.startsWith('02-basic-rays: '));
+  if (!/^02-basic-rays: yours \(JavaScript\): 2 of 3 functions pass; to fix: CanvasToViewport$/.test(line ?? '')) {
+    Fail(`the index, after chapter 2 was checked with one function failing: ${JSON.stringify(progress)}`);
+  } else {
+    console.log(`the index says "${line}"`);
+  }
+  await Screenshot('index-1280');
+}
+
 // Chapter 2 written, then chapter 3 opened: chapter 2's code carried forward, with
 // chapter 3's new function to write and its changed one named.
 async function CheckCarriedForward() {
@@ -531,6 +576,7 @@ const parts = {
   mistakes: CheckMistakes,
   loop: CheckEndlessLoopAndSyntax,
   marks: CheckEditorMarks,
+  keep: CheckKeep,
   compare: CheckComparison,
   indent: CheckPythonIndent,
   start: CheckPythonStart,

@@ -295,7 +295,7 @@ function Tabs() {
   for (const [tab] of tabs) document.getElementById(tab).addEventListener('click', () => show(tab));
   wide.addEventListener('change', () => show(chosen));
   if (!document.getElementById('your-code')) document.getElementById('tabs').hidden = true;
-  show(location.hash === '#your-code' ? 'tab-code' : 'tab-readme');
+  show(location.hash === '#your-code' || location.hash.startsWith('#code=') ? 'tab-code' : 'tab-readme');
 }
 
 async function Start() {

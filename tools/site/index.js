@@ -2,7 +2,8 @@
 // figure, drawn as the page loads by the chapter's own C++ compiled to WebAssembly, in a
 // worker (figures_client.js), so that the page scrolls while they are drawn: at the
 // figure's own size, since the rasterizer chapters draw in canvas pixels, then shrunk;
-// one chapter after the other.
+// one chapter after the other. Under each, how the reader's own code of the chapter
+// fared in its last check on the chapter's page, where there was one.
 'use strict';
 
 // Shrinks RGBA pixels by a whole factor, each small pixel the darkest of the block
@@ -50,4 +51,28 @@ async function DrawThumbnails() {
   document.body.dataset.thumbnails = 'drawn';
 }
 
+// Under each chapter's picture, how the reader's own code of it fared in its last full
+// check on the chapter's page (yourcode.js keeps it in this browser's storage).
+function ShowProgress() {
+  for (const canvas of document.querySelectorAll('canvas.thumbnail')) {
+    let kept = null;
+    try {
+      kept = JSON.parse(localStorage.getItem(`cgfs-progress:${canvas.dataset.chapter}`));
+    } catch {
+      // storage refused, or not what yourcode.js keeps: nothing to show
+    }
+    if (!kept || !Array.isArray(kept.passed) || !Array.isArray(kept.failed) || !Array.isArray(kept.unwritten)) continue;
+    const total = kept.passed.length + kept.failed.length + kept.unwritten.length;
+    const line = document.createElement('p');
+    line.className = 'progress';
+    line.dataset.done = kept.passed.length === total ? 'yes' : 'no';
+    line.textContent = `yours (${kept.language === 'python' ? 'Python' : 'JavaScript'}): ` +
+      `${kept.passed.length === total ? '✓ ' : ''}${kept.passed.length} of ${total} functions pass` +
+      (kept.failed.length ? `; to fix: ${kept.failed.join(', ')}` : '') +
+      (kept.unwritten.length ? `; to write: ${kept.unwritten.join(', ')}` : '');
+    canvas.closest('td').append(line);
+  }
+}
+
+ShowProgress();
 DrawThumbnails();

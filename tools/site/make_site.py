@@ -367,8 +367,10 @@ kept here, for this chapter and language: nothing is sent anywhere.</p>
 </div>
 <div class="code-bar code-file-bar"><code id="code-file"></code>
 <button type="button" id="code-download">Download</button>
+<button type="button" id="code-link-button" title="a link that carries your code in itself">Link</button>
 <button type="button" id="code-open-button">Open…</button><input type="file" id="code-open" accept=".js,.mjs,.cjs,.py" hidden>
-<button type="button" id="code-start-over">Start over</button></div>
+<button type="button" id="code-start-over">Start over</button>
+<input type="text" id="code-link" readonly hidden aria-label="a link with your code"></div>
 <p id="code-no-drawing" class="note" hidden>No figure of this chapter is drawn by its checked functions alone:
 its figures take the whole pipeline (RenderScene and the rest), which the cases do not cover.</p>
 <textarea id="code-editor" aria-label="your code"></textarea>

@@ -30,6 +30,12 @@ const yourCode = {
 
 const $ = (id) => document.getElementById(id);
 const StorageKey = (chapter, language) => `cgfs-code:${chapter}:${language}`;
+// Which functions of the chapter passed the last full check: read by the index (index.js).
+const ProgressKey = (chapter) => `cgfs-progress:${chapter}`;
+const kMostCode = 1 << 20;  // bytes of code a file or a link may bring (a chapter is a few KB)
+// A link's code (#code=LANGUAGE:DEFLATED-BASE64URL), read before chapter.js rewrites the
+// address for the figure shown.
+const kLinked = /^#code=(javascript|python):([A-Za-z0-9_-]+)$/.exec(location.hash);
 
 function Stored(key) {
   try {
@@ -158,7 +164,10 @@ async function Check(only = null) {
       Status(`Stopped after ${checked.toFixed(1)} s: the cases not run are not checked.`);
       return;
     }
-    if (only === null) yourCode.lastCheck = { code: runner.code, failed };
+    if (only === null) {
+      yourCode.lastCheck = { code: runner.code, failed };
+      KeepProgress(records, language);
+    }
     Status(`${failed ? 'Something to fix' : 'Every case passed'}: checked in ${checked.toFixed(2)} s` +
            (language === 'python' ? ` (${((performance.now() - start) / 1000).toFixed(1)} s with starting Python)` : ''));
   } catch (error) {
@@ -267,6 +276,84 @@ function CheckAtCursor() {
   if (name) Check(name);
 }
 
+// The chapter's functions and their verdicts in the last full check, for the index:
+// { language, passed: [names], failed: [names], unwritten: [names] }.
+function KeepProgress(records, language) {
+  const own = new Set(yourCode.files[yourCode.chapter].functions.map((entry) => entry.function));
+  const rank = ['passed', 'unwritten', 'failed'];  // a function's verdict: its cases' worst
+  const verdicts = new Map();
+  for (const { function: name, status } of records) {
+    if (!own.has(name)) continue;
+    const verdict = status === 'pass' ? 'passed' : status === 'not written' ? 'unwritten' : 'failed';
+    if (rank.indexOf(verdict) >= rank.indexOf(verdicts.get(name) ?? 'passed')) verdicts.set(name, verdict);
+  }
+  const named = (verdict) => [...verdicts].filter(([, each]) => each === verdict).map(([name]) => name);
+  Store(ProgressKey(yourCode.chapter), JSON.stringify({ language, passed: named('passed'), failed: named('failed'),
+    unwritten: named('unwritten') }));
+}
+
+const Base64Url = (bytes) => {
+  let text = '';
+  for (let i = 0; i < bytes.length; i += 8192) text += String.fromCharCode(...bytes.subarray(i, i + 8192));
+  return btoa(text).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+};
+
+// A link to this page with the code in its fragment (after the #, which a browser sends
+// to no server): deflated, in base64url.
+async function MakeLink() {
+  Save();
+  const deflated = new Response(new Blob([yourCode.editor.getValue()]).stream()
+    .pipeThrough(new CompressionStream('deflate-raw')));
+  const link = `${location.href.replace(/#.*$/, '')}#code=${yourCode.language}:` +
+    Base64Url(new Uint8Array(await deflated.arrayBuffer()));
+  $('code-link').value = link;
+  $('code-link').hidden = false;
+  $('code-link').select();
+  let copied = false;
+  try {
+    await navigator.clipboard.writeText(link);
+    copied = true;
+  } catch {
+    // no clipboard here (a page opened from a file, or refused): the link is shown to copy
+  }
+  Status(`A link with your code (${link.length} characters)${copied ? ', copied' : ''}: it opens this page with ` +
+         'your code in the editor. Nothing is sent anywhere: the code is in the link itself.');
+}
+
+// The code a link brought, inflated, at most kMostCode bytes; or throws why not.
+async function LinkedCode(text) {
+  const bytes = Uint8Array.from(atob(text.replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0));
+  const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('deflate-raw')).getReader();
+  const parts = [];
+  for (let size = 0; ;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    size += value.length;
+    if (size > kMostCode) {
+      reader.cancel();
+      throw new Error('it holds more than 1 MB of code');
+    }
+    parts.push(value);
+  }
+  return new TextDecoder('utf-8', { fatal: true }).decode(await new Blob(parts).arrayBuffer());
+}
+
+// Opened from a link with code: that code in the editor, over the reader's own (one
+// Ctrl+Z brings theirs back).
+async function OpenLinked() {
+  const [, language, text] = kLinked;
+  let code;
+  try {
+    code = await LinkedCode(text);
+  } catch (error) {
+    Status(`This link's code could not be read (${error.message ?? error}): the editor has your own.`);
+    return;
+  }
+  if (language !== yourCode.language) ShowCode(language, OpeningCode(language));
+  yourCode.editor.setValue(code);
+  Status('The code of the link you opened is in the editor; Ctrl+Z brings back what you had.');
+}
+
 function Stop() {
   yourCode.running?.End();
   yourCode.running = null;
@@ -288,7 +375,7 @@ async function Open(file) {
     Status(`${file.name}: open a Python file (.py) or JavaScript (.js, .mjs, .cjs)`);
     return;
   }
-  if (file.size > 1 << 20) {
+  if (file.size > kMostCode) {
     Status(`${file.name}: larger than 1 MB, not a chapter`);
     return;
   }
@@ -347,6 +434,7 @@ function StartYourCode() {
   $('code-draw').addEventListener('click', Draw);
   $('code-stop').addEventListener('click', Stop);
   $('code-download').addEventListener('click', Download);
+  $('code-link-button').addEventListener('click', MakeLink);
   $('code-open-button').addEventListener('click', () => $('code-open').click());
   $('code-open').addEventListener('change', (event) => { if (event.target.files[0]) Open(event.target.files[0]); event.target.value = ''; });
   $('code-start-over').addEventListener('click', StartOver);
@@ -354,7 +442,11 @@ function StartYourCode() {
   // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
   document.addEventListener('cgfs-tab', ({ detail }) => { if (detail === 'tab-code') yourCode.editor.refresh(); });
   yourCode.comparison = new ComparisonView();
-  $('code-panel').dataset.ready = 'yes';
+  if (kLinked) {
+    OpenLinked().finally(() => { $('code-panel').dataset.ready = 'yes'; });
+  } else {
+    $('code-panel').dataset.ready = 'yes';
+  }
 }
 
 StartYourCode();
