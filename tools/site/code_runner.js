@@ -36,6 +36,7 @@ const WorkerAddress = (text) => URL.createObjectURL(new Blob([text], { type: 'te
 // One worker: requests answered one at a time, each within its limit (seconds) or the
 // worker is ended. `onProgress(fraction)` hears a draw's progress.
 class CodeWorker {
+  // onProgress(fraction): how far Python's start has come.
   static async Start(language, onProgress) {
     const worker = new CodeWorker(language, onProgress);
     if (language === 'python') {
@@ -56,8 +57,10 @@ class CodeWorker {
     this.next = 1;
     this.waiting = null;
     this.onProgress = onProgress;
+    this.onPreview = () => {};
     this.worker.onmessage = ({ data }) => {
       if ('progress' in data) this.onProgress(data.progress);
+      else if ('preview' in data) this.onPreview(data.preview);
       else if (this.waiting?.id === data.id) this.waiting.resolve(data);
     };
   }
@@ -83,27 +86,66 @@ class CodeWorker {
   }
 }
 
-// Fresh workers, one made ready ahead (Python's takes seconds to start).
+// Fresh workers made ready ahead: Python's take seconds to start, so two are kept ready
+// (a check clicked again at once takes the second), started one after the other;
+// JavaScript's start at once. Whoever waits for one that is still starting hears how far
+// its start has come (onStarting(fraction)).
 class WorkerSupply {
   constructor(language) {
     this.language = language;
-    this.ready = null;
+    this.ready = [];  // { promise, listener }: the workers ready or starting, the oldest first
+    this.starting = false;
+    this.target = language === 'python' ? 2 : 1;
   }
 
-  // A worker no code has run in, and the next one started.
-  async Take(onProgress) {
-    const taking = this.ready ?? CodeWorker.Start(this.language);
-    this.ready = null;
-    const worker = await taking;
+  // Starts workers until `target` are ready or starting, one at a time.
+  Fill() {
+    if (this.starting || this.ready.length >= this.target) return;
+    const entry = { listener: null };
+    entry.promise = CodeWorker.Start(this.language, (fraction) => entry.listener?.(fraction));
+    this.starting = true;
+    this.ready.push(entry);
+    const started = () => {
+      this.starting = false;
+      this.Fill();
+    };
+    entry.promise.then(() => {
+      entry.done = true;
+      started();
+    }, () => {
+      this.ready = this.ready.filter((each) => each !== entry);
+      started();
+    });
+  }
+
+  // Python started ahead, as soon as the reader chooses it.
+  Warm(onStarting = () => {}) {
+    this.Fill();
+    this.ready[0].listener = onStarting;
+    this.ready[0].promise.then(() => onStarting(1), () => {});
+  }
+
+  // A worker no code has run in (the oldest made ready). The supply is filled again by
+  // Refill, once the check or draw is over: a worker started meanwhile would take a core
+  // from it.
+  async Take(onProgress, onStarting = () => {}) {
+    if (this.ready.length === 0) this.Fill();
+    const entry = this.ready.shift();
+    entry.listener = onStarting;
+    const worker = await entry.promise;
+    entry.listener = null;
     worker.onProgress = onProgress ?? (() => {});
-    this.ready = CodeWorker.Start(this.language);
-    this.ready.catch(() => { this.ready = null; });
     return worker;
   }
+
+  // How many workers are ready now (for the site's test).
+  get readyNow() { return this.ready.filter((entry) => entry.done).length; }
 }
 
 const supplies = {};
 const SupplyFor = (language) => (supplies[language] ??= new WorkerSupply(language));
+// After a check or a draw: workers made ready again for the next.
+const RefillWorkers = () => Object.values(supplies).forEach((supply) => supply.Fill());
 
 // The reader's code loaded in a fresh worker: the account it gives of itself, held
 // against its syntax (read first, before any of it ran). Throws CheckError with the
@@ -124,8 +166,9 @@ async function LoadInWorker(worker, { code, file, functions, names }) {
 
 // The runner the checker's core drives: load, then a case at a time.
 class PageRunner {
-  constructor({ language, code, file, timeLimit, totalCases, onStatus = () => {} }) {
-    Object.assign(this, { language, code, file, timeLimit, totalCases, onStatus, worker: null });
+  // onStarting(fraction): how far Python's start has come, while the check waits for it.
+  constructor({ language, code, file, timeLimit, totalCases, onStatus = () => {}, onStarting = () => {} }) {
+    Object.assign(this, { language, code, file, timeLimit, totalCases, onStatus, onStarting, worker: null });
     this.started = Date.now();
     this.bound = (totalCases * timeLimit + CGFS_CHECK.LOAD_LIMIT) * 1000;
   }
@@ -133,7 +176,7 @@ class PageRunner {
   async load(functions, names) {
     this.loadRequest = { code: this.code, file: this.file, functions, names };
     if (this.language === 'python') this.onStatus('starting Python (Pyodide)…');
-    this.worker = await SupplyFor(this.language).Take();
+    this.worker = await SupplyFor(this.language).Take(null, this.onStarting);
     this.onStatus('checking…');
     this.started = Date.now();
     return LoadInWorker(this.worker, this.loadRequest);
@@ -173,9 +216,11 @@ class PageRunner {
 
 // A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },
 // or { problem } (one line), or { cancelled } when `cancel` was called first.
-async function DrawWithCode({ language, code, file, functions, names, recipe, kinds, seconds, onProgress, onStatus }) {
+async function DrawWithCode({ language, code, file, functions, names, recipe, kinds, seconds, onProgress, onStatus,
+  onPreview = () => {}, onStarting = () => {} }) {
   if (language === 'python') onStatus('starting Python (Pyodide)…');
-  const worker = await SupplyFor(language).Take(onProgress);
+  const worker = await SupplyFor(language).Take(onProgress, onStarting);
+  worker.onPreview = onPreview;
   DrawWithCode.current = worker;
   try {
     onStatus('loading your code…');

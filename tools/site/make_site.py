@@ -375,6 +375,8 @@ kept here, for this chapter and language: nothing is sent anywhere.</p>
 its figures take the whole pipeline (RenderScene and the rest), which the cases do not cover.</p>
 <textarea id="code-editor" aria-label="your code"></textarea>
 <p id="code-status" role="status"></p>
+<progress id="code-python-start" max="1" value="0" hidden aria-label="Python starting"></progress>
+<canvas id="code-preview" hidden title="your figure at a quarter of its resolution, while the full one is drawn"></canvas>
 <pre id="code-report"></pre>
 <div id="code-drawing" hidden>
 <p id="code-teach"></p>

@@ -8,12 +8,15 @@
 // it would import its runtime as a module, is given that runtime instead
 // (createPyodideModule) and loaded with importScripts hidden from its test. Messages
 // { id, op, ... }, answered { id, ... }, as js_worker.mjs's:
-//   init { assets, runner }                  Pyodide started, the runner imported
+//   init { assets, runner }                  Pyodide started, the runner imported;
+//                                            { progress } messages meanwhile
 //   declare { code }                         the functions the code defines, from its
 //                                            syntax, before any of it runs
 //   load { code, file, functions, names }    the chapter's account of itself, or why not
 //   case { request }                         what the function made of one case
-//   draw { recipe, kinds }                   a figure drawn with the reader's functions
+//   draw { recipe, kinds }                   a figure drawn with the reader's functions;
+//                                            { progress } and, for a ray-traced one,
+//                                            { preview }: a quarter-resolution picture
 // The page ends the worker when a case or a draw runs too long.
 'use strict';
 
@@ -55,9 +58,12 @@ function Decoded(base64) {
 
 const operations = {
   async init({ assets, runner: runnerText }) {
-    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': Decoded(assets.wasm), 'python_stdlib.zip': Decoded(assets.stdlib) });
-    LoadPyodideScripts(assets);
     const start = performance.now();
+    postMessage({ progress: 0.05 });
+    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': Decoded(assets.wasm), 'python_stdlib.zip': Decoded(assets.stdlib) });
+    postMessage({ progress: 0.3 });
+    LoadPyodideScripts(assets);
+    postMessage({ progress: 0.4 });
     pyodide = await CGFS_PYODIDE_LOADER.loadPyodide({
       indexURL: 'https://pyodide.invalid/', stdLibURL: 'https://pyodide.invalid/python_stdlib.zip',
       lockFileContents: assets.lock, createPyodideModule: CGFS_PYODIDE_ASM.default, stdout: () => {}, stderr: () => {},
@@ -65,6 +71,7 @@ const operations = {
     pyodide.FS.mkdirTree('/home/pyodide/runner');
     pyodide.FS.writeFile('/home/pyodide/runner/python_runner.py', runnerText);
     pyodide.runPython("import sys\nsys.path.insert(0, '/home/pyodide/runner')\nimport python_runner");
+    postMessage({ progress: 0.9 });
     runner = pyodide.pyimport('python_runner');
     return { ready: true, milliseconds: performance.now() - start };
   },
@@ -79,7 +86,12 @@ const operations = {
   },
   draw({ recipe, kinds }) {
     const drawn = runner.page_draw(JSON.stringify(recipe), JSON.stringify(kinds),
-      (fraction) => postMessage({ progress: fraction }));
+      (fraction) => postMessage({ progress: fraction }),
+      (pixels) => {
+        const bytes = new Uint8ClampedArray(pixels.toJs());
+        pixels.destroy();
+        postMessage({ preview: bytes }, [bytes.buffer]);
+      });
     if (typeof drawn === 'string') return { problem: drawn };
     const pixels = new Uint8ClampedArray(drawn.toJs());
     drawn.destroy();

@@ -89,11 +89,22 @@ function Busy(what) {
     $(id).disabled = what !== null;
   }
   $('code-stop').hidden = what === null;
-  if (what === null) ShowFunctionAtCursor();  // enabled only in one of the chapter's functions
+  if (what === null) {
+    ShowFunctionAtCursor();  // enabled only in one of the chapter's functions
+    RefillWorkers();
+  }
 }
 
 function Status(text) {
   $('code-status').textContent = text;
+}
+
+// How far Python's start has come (0 to 1), on its bar; the bar gone once it has started.
+function PythonStarting(fraction) {
+  $('code-python-start').hidden = fraction >= 1;
+  $('code-python-start').value = fraction;
+  if (fraction < 1) Status(`starting Python (Pyodide)… ${Math.round(fraction * 100)} %`);
+  else if ($('code-status').textContent.startsWith('starting Python')) Status('Python is ready.');
 }
 
 // The report, a line to a span: a function's first line names it (data-function), for
@@ -150,7 +161,7 @@ async function Check(only = null) {
     : { ...section, entries: section.entries.filter((entry) => entry.function === only) }));
   const totalCases = list.flatMap((section) => section.entries).reduce((n, entry) => n + entry.cases.length, 0);
   const runner = new PageRunner({ language, code: yourCode.editor.getValue(), file: yourCode.file,
-    timeLimit: CGFS_CHECK.CASE_LIMIT, totalCases, onStatus: Status });
+    timeLimit: CGFS_CHECK.CASE_LIMIT, totalCases, onStatus: Status, onStarting: PythonStarting });
   yourCode.running = runner;
   const start = performance.now();
   try {
@@ -222,6 +233,13 @@ function Teaching(passed) {
   return '';
 }
 
+// A ray-traced figure drawn in Python, at a quarter of its resolution, while the full
+// one is drawn.
+function ShowPreview(pixels, width, height) {
+  ComparisonView.PutOn($('code-preview'), pixels, width, height);
+  $('code-preview').hidden = false;
+}
+
 // Draw: the chosen figure with the reader's functions, beside ours and their difference,
 // and what cgfs-compare says of it.
 async function Draw() {
@@ -236,7 +254,9 @@ async function Draw() {
   const start = performance.now();
   const drawn = await DrawWithCode({ language: yourCode.language, code: yourCode.editor.getValue(), file: yourCode.file,
     functions: Object.keys(Kinds()), names: CGFS_CHECK.NAMES, recipe, kinds: Kinds(), seconds: kDrawLimit,
-    onStatus: Status, onProgress: (fraction) => Status(`drawing ${name} with your functions… ${Math.round(fraction * 100)} %`) });
+    onStatus: Status, onStarting: PythonStarting, onPreview: (pixels) => ShowPreview(pixels, width, height),
+    onProgress: (fraction) => Status(`drawing ${name} with your functions… ${Math.round(fraction * 100)} %`) });
+  $('code-preview').hidden = true;
   try {
     if (drawn.cancelled) {
       Status('Stopped.');
@@ -400,7 +420,14 @@ function ChooseLanguage(language) {
   Save();
   Store('cgfs-code:language', language);
   ShowCode(language, OpeningCode(language));
-  Status(language === 'python' ? 'Python runs in your browser (Pyodide); it starts when you first check or draw.' : '');
+  Status('');
+  WarmPython();
+}
+
+// Python started as soon as it is the language, while the reader reads and types.
+function WarmPython() {
+  if (yourCode.language !== 'python') return;
+  SupplyFor('python').Warm(PythonStarting);
 }
 
 function ListDrawings() {
@@ -440,8 +467,13 @@ function StartYourCode() {
   $('code-start-over').addEventListener('click', StartOver);
   window.addEventListener('beforeunload', Save);
   // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
-  document.addEventListener('cgfs-tab', ({ detail }) => { if (detail === 'tab-code') yourCode.editor.refresh(); });
+  document.addEventListener('cgfs-tab', ({ detail }) => {
+    if (detail !== 'tab-code') return;
+    yourCode.editor.refresh();
+    WarmPython();
+  });
   yourCode.comparison = new ComparisonView();
+  if ($('tab-code').getAttribute('aria-selected') === 'true') WarmPython();  // (its tab chosen before this ran)
   if (kLinked) {
     OpenLinked().finally(() => { $('code-panel').dataset.ready = 'yes'; });
   } else {

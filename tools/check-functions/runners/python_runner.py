@@ -814,23 +814,34 @@ def channel(value):
 notes = []  # what the last figure drawn has to say of the reader's points (fraction_note)
 
 
-def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
+def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=None):
     """Draws a figure (tools/site/drawings.json) with the chapter's functions: its
     canvas, viewport and scene put where the chapter reads them, as a case's are, then a
     ray per pixel through the chapter's TraceRay, or calls to its drawing functions, each
     argument built as the cases build it (kinds: a function's parameters and their
     kinds) or the value a call of the chapter's returned. RGBA bytes, white where
-    nothing was put."""
+    nothing was put. preview(bytes): given, a ray-traced figure is first traced at a
+    quarter of its resolution (a ray for each block of 4 x 4 pixels, the block given its
+    colour) and shown so, before the full picture (a sixteenth more rays)."""
     width, height = recipe["given"]["canvas"]["width"], recipe["given"]["canvas"]["height"]
     pixels = bytearray(b"\xff" * (width * height * 4))
 
-    def put(x, y, color):
+    def put(x, y, color, side=1):
+        """The pixel (x, y) in the book's canvas coordinates given a colour, or the block
+        of side x side pixels whose bottom-left corner it is."""
         column, row = width // 2 + math.trunc(x), height // 2 - math.trunc(y) - 1
         if 0 <= column < width and 0 <= row < height:
             rgb = plain(color, [16])
             rgb = [rgb[k] for k in "rgb"] if isinstance(rgb, dict) else rgb
-            at = (row * width + column) * 4
-            pixels[at:at + 3] = bytes(channel(number(each)) for each in rgb[:3])
+            pixel = bytes(channel(number(each)) for each in rgb[:3]) + b"\xff"
+            if side == 1:
+                at = (row * width + column) * 4
+                pixels[at:at + 4] = pixel
+                return
+            run = min(side, width - column)
+            for line in range(max(0, row - side + 1), row + 1):
+                at = (line * width + column) * 4
+                pixels[at:at + 4 * run] = pixel * run
 
     given = decoded(recipe["given"])
     given["canvas"]["PutPixel"] = put
@@ -848,11 +859,19 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None):
         trace, through = theirs("TraceRay"), theirs(rays["direction"])
         origin = chapter.adapter.vector(rays["origin"])
         depth = rays.get("recursion_depth")
+
+        def ray(x, y):
+            D = through(x, y)
+            return (trace(origin, D, rays["t_min"], math.inf) if depth is None
+                    else trace(origin, D, rays["t_min"], math.inf, depth))
+        if preview is not None:
+            for x in range(-width // 2, width // 2, 4):
+                for y in range(-height // 2, height // 2, 4):
+                    put(x, y, ray(x, y), 4)
+            preview(bytes(pixels))
         for x in range(-width // 2, width // 2):
             for y in range(-height // 2, height // 2):
-                D = through(x, y)
-                put(x, y, trace(origin, D, rays["t_min"], math.inf) if depth is None
-                    else trace(origin, D, rays["t_min"], math.inf, depth))
+                put(x, y, ray(x, y))
             if x % 20 == 0:
                 progress((x + width / 2) / width)
     else:
@@ -941,10 +960,11 @@ def page_draw_notes():
     return json.dumps(notes)
 
 
-def page_draw(recipe, kinds, progress):
-    """The figure's RGBA bytes, or why it could not be drawn: one line."""
+def page_draw(recipe, kinds, progress, preview):
+    """The figure's RGBA bytes, or why it could not be drawn: one line; preview(bytes)
+    hears a ray-traced figure at a quarter of its resolution first."""
     try:
-        return draw_figure(json.loads(recipe), page_chapter, json.loads(kinds), progress)
+        return draw_figure(json.loads(recipe), page_chapter, json.loads(kinds), progress, preview)
     except BaseException as error:  # the reader's code: said, one line
         return one_line(error)
 
