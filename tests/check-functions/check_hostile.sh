@@ -31,18 +31,9 @@ run() {
   took=$((SECONDS - start))
   sed 's/^/    /' "$work/out.txt" | cut -c1-200
 }
-# The most a run of chapter 02 with --time-limit LIMIT may take by the checker's own
-# promise (its cases x LIMIT + 60 s to load; it stops there and says so: "a run bounded
-# by its cases" below), and 15 s more for starting the sandbox and an interpreter
-# (under a second quiet; a few seconds beside four CPU-bound processes, when these runs
-# took up to 26 s against 3 quiet). A run within it was cut where the checker promises,
-# whatever the machine's load; a hang that is not cut runs on to ctest's timeout. The
-# report says that each case was cut at its own limit ("did not return within").
+# Chapter 02's cases, for the bound a run may take (checks.sh's promised).
 cases=$(node -e 'const f = require(process.argv[1]); console.log(f.functions.reduce((n, e) => n + e.cases.length, 0))' \
   "$source_dir/tests/cases/02-basic-rays.json")
-promised() {  # LIMIT
-  awk -v cases="$cases" -v limit="$1" 'BEGIN { bound = cases * limit + 60 + 15; printf "%d", bound == int(bound) ? bound : int(bound) + 1 }'
-}
 fails_within() {  # WHAT SECONDS: exit 1, and took at most SECONDS
   check "$1: exit status 1" test $status -eq 1
   check "$1: within $2 s (took $took)" test $took -le "$2"
@@ -124,16 +115,16 @@ EOF
 
   echo "== Python: routes to a pass, and routes out"
   run 02 "$work/patches.py" --time-limit 1
-  fails_within "patching the runner, json and sys.modules" "$(promised 1)"
+  fails_within "patching the runner, json and sys.modules" "$(promised "$cases" 1)"
   run 02 "$work/forges.py" --time-limit 1
-  fails_within "forging the process's account and answers at import" "$(promised 1)"
+  fails_within "forging the process's account and answers at import" "$(promised "$cases" 1)"
   check "the functions it hid are named as hidden" says "your file defines CanvasToViewport, but the process it ran in said it does not"
   run 02 "$work/signals.py" --time-limit 1
-  fails_within "SIGSTOP to itself and to the process above, SIGKILL and a spin, SIGINT" "$(promised 1)"
+  fails_within "SIGSTOP to itself and to the process above, SIGKILL and a spin, SIGINT" "$(promised "$cases" 1)"
   check "the case that stopped itself failed on its time limit" says "did not return within 1 s"
   check "the others are still judged" says "^  TraceRay +passed \(9 cases\)"
   run 02 "$work/escapes.py" --time-limit 1
-  fails_within "writing to the case files, the checker, terminals; a memory bomb" "$(promised 1)"
+  fails_within "writing to the case files, the checker, terminals; a memory bomb" "$(promised "$cases" 1)"
   check "the memory bomb ended in its case" says "raised MemoryError"
   check "no line of the report is the student's but those marked as what it printed" \
     bash -c '! grep -v "^      | " "$1" | grep -q "forged by the student"' _ "$work/out.txt"
@@ -160,19 +151,19 @@ with forges "  require(\"fs\").writeSync(4, JSON.stringify({ id: 2, nonce: \"x\"
   cat "$work/forges.js"; } >"$work/forges-empty.js"
 with tampers "  Math.abs = () => 0; JSON.stringify = () => '{\"returned\": [0.5, -0.25, 1]}'; return [9, 9, 9];"
 run 02 "$work/blocks.js" --time-limit 1
-fails_within "a blocking child process, Atomics.wait, a grandchild and SIGSTOP above, a memory bomb" "$(promised 1)"
+fails_within "a blocking child process, Atomics.wait, a grandchild and SIGSTOP above, a memory bomb" "$(promised "$cases" 1)"
 check "each of those cases failed" says "^  CanvasToViewport +FAILED 5 of 5 cases"
 run 02 "$work/forges.js" --time-limit 1
-fails_within "answers forged into the answer pipe, a case file appended to" "$(promised 1)"
+fails_within "answers forged into the answer pipe, a case file appended to" "$(promised "$cases" 1)"
 run 02 "$work/forges-account.js" --time-limit 1
-fails_within "the process's account of itself forged" "$(promised 1)"
+fails_within "the process's account of itself forged" "$(promised "$cases" 1)"
 check "the functions it hid are named as hidden" says "your file defines CanvasToViewport, but the process it ran in said it does not"
 run 02 "$work/forges-empty.js" --time-limit 1
-fails_within "the process's account forged to say every function is still empty" "$(promised 1)"
+fails_within "the process's account forged to say every function is still empty" "$(promised "$cases" 1)"
 check "its written functions are not taken for unwritten ones" bash -c '! grep -q "not written yet" "$1"' _ "$work/out.txt"
 check "(they run their cases, and CanvasToViewport fails them)" says "^  CanvasToViewport +FAILED"
 run 02 "$work/tampers.js" --time-limit 1
-fails_within "JSON.stringify and Math replaced" "$(promised 1)"
+fails_within "JSON.stringify and Math replaced" "$(promised "$cases" 1)"
 
 if [ "$deep" = --deep ]; then
   echo "== a run bounded by its cases and the time to load, and said so"
@@ -181,7 +172,7 @@ if [ "$deep" = --deep ]; then
   { echo 'require("child_process").execSync("sleep 10");'
     sed 's|^function CanvasToViewport(x, y) {|function CanvasToViewport(x, y) {\n  require("child_process").execSync("sleep 30");|' "$base"; } >"$work/bounded.js"
   run 02 "$work/bounded.js" --time-limit 0.2
-  fails_within "a run that would take longer than its bound" "$(promised 0.2)"
+  fails_within "a run that would take longer than its bound" "$(promised "$cases" 0.2)"
   check "it says it stopped, and why" says "^stopped after [0-9]+ s, the most this check may take \(19 cases × 0.2 s \+ 60 s to load\)"
 fi
 
