@@ -157,7 +157,9 @@ expect 2 "compare: not an image" "$compare" 02-basic-rays/fig-2-11 "$work/text.p
 expect 2 "compare: one argument" "$compare" 02-basic-rays/fig-2-11
 
 # Hostile inputs: each one line and exit 2, within 20 s and 2 GB of address space,
-# and nothing of the user's overwritten.
+# and nothing of the user's overwritten. (20 s cuts a hang: each is refused in well
+# under a second quiet, a margin of a hundred times for a busy machine, and of more
+# than ten in the sanitizer build.)
 # Under AddressSanitizer (CGFS_SANITIZED, the sanitize preset) the address-space limit
 # is left out: the sanitizer reserves terabytes of shadow memory up front.
 limit=(prlimit --as=2000000000 --)

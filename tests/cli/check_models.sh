@@ -62,6 +62,7 @@ for program in "$@"; do
   for case in "${cases[@]}"; do
     file=${case%%|*} says=${case#*|}
     [ "${file:0:1}" = / ] || file=$bad/$file
+    # (20 s cuts a hang: each is refused in well under a second quiet)
     expect 2 "$name: $(basename "$file")" timeout 20 "$program" --model "$file" --size 40x40 \
       --output "$work/bad"
     grep -qF -- "$says" "$work/stderr" || fail "$name: $(basename "$file") does not say '$says'"

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # scripts/site --serve's port, before anything is built: not a number, out of range,
 # more than one line, too long, or taken by another program, each one line and exit
-# status 2, at once. (The deep checks' site part serves the built site, 200 requests at
-# once.) Usage: check_serve_arguments.sh SOURCE_DIR
+# status 2, at once: within 10 s, where each takes a fraction of a second quiet (a
+# refusal after a build of minutes is what this catches; 60 s cuts a hang). (The deep
+# checks' site part serves the built site, 200 requests at once.)
+# Usage: check_serve_arguments.sh SOURCE_DIR
 set -uo pipefail
 source_dir=$1
 failed=0
