@@ -19,7 +19,7 @@
 // It prints how long each chapter's check took on the page.
 //
 // Usage: node check_your_code.mjs REPO SITE NATIVE_BUILD [--only PART ...]
-//   PART: carried, javascript, mistakes, loop, marks, keep, compare, indent, start, python, card, layout, docs
+//   PART: carried, javascript, mistakes, loop, marks, keep, controls, compare, indent, start, python, card, layout, docs
 //   (all, without --only)
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
 import {execFileSync, spawnSync} from 'node:child_process';
@@ -445,6 +445,58 @@ async function CheckComparison() {
   await browser.Send('Emulation.clearDeviceMetricsOverride');
 }
 
+// The chapter's idea by hand (tools/site/controls.json): every value names a figure of
+// the chapter; choosing one shows that figure, showing a figure sets its control; with
+// "draw it with my code too", the reader's picture of it is drawn beside ours, and says
+// whether it is the same (our reference: the same at every depth; with the reflected
+// ray's depth lowered by two, not the same at depth 3).
+async function CheckControls() {
+  const {chapters} = JSON.parse(readFileSync(join(repo, 'tools', 'site', 'controls.json'), 'utf8'));
+  for (const [chapter, groups] of Object.entries(chapters)) {
+    await browser.Open(`${chapter}/index.html`);
+    await browser.WaitFor(`document.getElementById('live').dataset.ready === 'yes'`, `${chapter}'s figures`);
+    const listed = await browser.Evaluate(`[...document.querySelectorAll('#figures button')].map((b) => b.textContent)`);
+    const rows = await browser.Evaluate(`document.querySelectorAll('#controls fieldset.control').length`);
+    if (rows !== groups.length) Fail(`${chapter}: ${rows} controls on the page, ${groups.length} in controls.json`);
+    for (const {values} of groups) {
+      for (const [label, figure] of values) {
+        if (!listed.includes(figure)) Fail(`${chapter}: controls.json's "${label}" names ${figure}, not one of its figures`);
+      }
+    }
+  }
+  const chosen = (figure) => `(() => { const r = [...document.querySelectorAll('#controls input')].find((i) => i.value === '${figure}');
+    r.checked = true; r.dispatchEvent(new Event('change')); })()`;
+  await OpenPanel('04-shadows-reflections', 'javascript');
+  const ours = readFileSync(ReferenceOf('04-shadows-reflections', 'javascript'), 'utf8');
+  await Type(ours);
+  await browser.Evaluate("document.getElementById('tab-readme').click()");
+  await browser.Evaluate(chosen('recursion-depth-0'));
+  await browser.WaitFor(`document.getElementById('canvas').dataset.drawn === 'full' &&
+    document.getElementById('caption').textContent.startsWith('no bounce')`, 'recursion depth 0 chosen', 30);
+  await browser.Evaluate(`[...document.querySelectorAll('#figures button')].find((b) => b.textContent === 'fig-4-8-reflections').click()`);
+  const set = await browser.Evaluate(`[...document.querySelectorAll('#controls input:checked')].map((i) => i.value).join(' ')`);
+  if (set !== 'fig-4-8-reflections') Fail(`fig-4-8-reflections shown: the controls say "${set}", not depth 3`);
+  await browser.Evaluate(`(() => { const c = document.getElementById('controls-mine'); c.checked = true; })()`);
+  const beside = async (figure, what) => {
+    await browser.Evaluate(chosen(figure));
+    await sleep(100);
+    await browser.WaitFor(`document.getElementById('code-panel').dataset.busy === '' &&
+      document.getElementById('controls-yours').dataset.figure === '${figure}'`, what, 60);
+    return browser.Evaluate(`document.querySelector('#controls-yours p').textContent`);
+  };
+  const same = await beside('recursion-depth-5', 'ours at depth 5, yours beside it');
+  await Screenshot('controls-1280', 'controls');
+  await browser.Evaluate("document.getElementById('tab-code').click()");
+  await Type(ours.replace('TraceRay(P, R, EPSILON, Infinity, recursion_depth - 1)', 'TraceRay(P, R, EPSILON, Infinity, recursion_depth - 2)'));
+  await browser.Evaluate("document.getElementById('tab-readme').click()");
+  const differs = await beside('fig-4-8-reflections', 'depth 3 with the depth lowered by two');
+  if (same !== 'recursion-depth-5, yours: the same as ours' || !/^fig-4-8-reflections, yours: not the same as ours/.test(differs)) {
+    Fail(`the controls with the reader's code: "${same}", then with the depth lowered by two "${differs}"`);
+  } else {
+    console.log(`the chapters' controls name their own figures; chapter 4's recursion depth drew "${same}", and "${differs}"`);
+  }
+}
+
 // Keeping one's work: the code is there after a reload; a link carries it to a page
 // whose editor held other code (one Ctrl+Z brings that back); a broken link says so in
 // one line and leaves the reader's code; the index says which functions pass.
@@ -617,6 +669,7 @@ const parts = {
   loop: CheckEndlessLoopAndSyntax,
   marks: CheckEditorMarks,
   keep: CheckKeep,
+  controls: CheckControls,
   compare: CheckComparison,
   indent: CheckPythonIndent,
   start: CheckPythonStart,

@@ -121,6 +121,7 @@ function Select(index) {
   figures[index].button.scrollIntoView({ block: 'nearest' });
   Say('caption', figures[index].caption);
   Say('status', `drawing ${figures[index].name}…`);
+  document.dispatchEvent(new CustomEvent('cgfs-shown', { detail: figures[index].name }));
   const partner = figures[index].costPartner;
   document.getElementById('cost').hidden = partner < 0;
   if (partner >= 0) {
@@ -298,8 +299,45 @@ function Tabs() {
   show(location.hash === '#your-code' || location.hash.startsWith('#code=') ? 'tab-code' : 'tab-readme');
 }
 
+// The chapter's parameters as controls (make_site.py's controls_box, controls.json): for
+// each scene a parameter, each of its values one of the chapter's figures. Choosing a
+// value shows that figure; showing a figure sets the control it belongs to. A value
+// chosen here is told to the Your code panel (the event cgfs-figure), which draws the
+// reader's own beside it when asked.
+function Controls() {
+  const box = document.getElementById('controls');
+  if (!box) return;
+  const groups = JSON.parse(box.dataset.controls);
+  const rows = [];
+  for (const [g, { scene, parameter, values }] of groups.entries()) {
+    const row = document.createElement('fieldset');
+    row.className = 'control';
+    const legend = document.createElement('legend');
+    legend.textContent = `${scene}: ${parameter}`;
+    row.append(legend);
+    for (const [label, figure] of values) {
+      const choice = document.createElement('label');
+      const radio = Object.assign(document.createElement('input'), { type: 'radio', name: `control-${g}`, value: figure });
+      radio.addEventListener('change', () => {
+        const index = figures.findIndex((each) => each.name === figure);
+        if (index < 0) return;
+        Select(index);
+        document.dispatchEvent(new CustomEvent('cgfs-figure', { detail: figure }));
+      });
+      choice.append(radio, ` ${label}`);
+      row.append(choice);
+    }
+    rows.push(row);
+  }
+  box.querySelector('.controls-title').after(...rows);
+  document.addEventListener('cgfs-shown', ({ detail }) => {
+    for (const radio of box.querySelectorAll('input[type="radio"]')) radio.checked = radio.value === detail;
+  });
+}
+
 async function Start() {
   Tabs();
+  Controls();
   figuresWorker = new FiguresWorker(live.dataset.module, CGFS_FIGURES_OF[live.dataset.chapter], (fraction) => {
     Say('status', `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
   });

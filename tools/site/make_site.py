@@ -163,6 +163,9 @@ class Site:
         self.web_build = Path(web_build)
         self.pyodide = Path(pyodide)
         self.cases = {p.stem: json.loads(p.read_text()) for p in sorted((self.repo / "tests" / "cases").glob("*.json"))}
+        self.controls = json.loads((SITE_FILES / "controls.json").read_text())["chapters"]
+        # The chapters whose figures a reader's functions draw (yourcode.js's Draw).
+        self.drawn_by_readers = json.loads((SITE_FILES / "drawings.json").read_text())["figures"]
         self.folder = SiteFolder(out)
         self.chapters = sorted(p.name for p in (self.repo / "chapters").iterdir()
                                if re.match(r"\d\d-", p.name) and p.is_dir())
@@ -274,6 +277,7 @@ class Site:
 <p id="problem" hidden></p>
 <canvas id="canvas" width="600" height="600"></canvas>
 <p><button id="cost" type="button" hidden title="where the work goes, pixel by pixel"></button></p>
+{self.controls_box(chapter)}
 {self.model_picker(chapter)}
 <div id="camera" hidden>
 <p>The view: <code id="view"></code> · <a id="view-link" href="">a link to this view</a>
@@ -316,6 +320,20 @@ byte for byte, as the native program's golden image.</p>
                    *(["models.js"] if self.takes_models(chapter) else []), "chapter.js",
                    *(YOUR_CODE_SCRIPTS if has_code else [])],
                   ["vendor/codemirror/codemirror.css"] if has_code else [])
+
+    def controls_box(self, chapter):
+        """The chapter's parameters as controls (controls.json; chapter.js's Controls), each
+        value one of its figures; with a box to draw the reader's own beside ours, where
+        the "Your code" panel draws that chapter's figures."""
+        if chapter not in self.controls:
+            return ""
+        mine = ('<p class="note"><label><input type="checkbox" id="controls-mine"> draw it with my code too '
+                '(the Your code tab\'s functions)</label></p>\n<div id="controls-yours" hidden><canvas></canvas>'
+                '<p></p></div>') if chapter in self.drawn_by_readers else ""
+        return f"""<div id="controls" data-controls='{html.escape(json.dumps(self.controls[chapter]), quote=True)}'>
+<p class="controls-title">The chapter's idea, by hand: each value is one of its figures.</p>
+{mine}
+</div>"""
 
     def takes_models(self, chapter):
         """Whether the chapter's program takes --model (its options.cpp declares it)."""

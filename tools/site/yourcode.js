@@ -240,6 +240,26 @@ function ShowPreview(pixels, width, height) {
   $('code-preview').hidden = false;
 }
 
+// The reader's picture of a figure chosen with the chapter's controls, beside ours in
+// the figure column (chapter.js's Controls), when "draw it with my code too" is ticked.
+function Beside(name, text, pixels = null, width = 0, height = 0) {
+  const box = $('controls-yours');
+  if (!box || !$('controls-mine').checked || $('code-figure').value !== name) return;
+  box.hidden = false;
+  box.querySelector('canvas').hidden = pixels === null;
+  if (pixels) ComparisonView.PutOn(box.querySelector('canvas'), pixels, width, height);
+  box.querySelector('p').textContent = `${name}, ${text}`;
+  box.dataset.figure = name;
+}
+
+function DrawBeside(name) {
+  if (!$('controls-mine')?.checked || !(name in yourCode.drawings) || $('code-panel').dataset.busy) return;
+  $('code-figure').value = name;
+  $('controls-yours').hidden = false;
+  $('controls-yours').querySelector('p').textContent = `${name}: drawing yours…`;
+  Draw();
+}
+
 // Draw: the chosen figure with the reader's functions, beside ours and their difference,
 // and what cgfs-compare says of it.
 async function Draw() {
@@ -264,6 +284,7 @@ async function Draw() {
     }
     if (drawn.problem) {
       Status(`${name} could not be drawn with your functions: ${drawn.problem}`);
+      Beside(name, `yours could not be drawn: ${drawn.problem}`);
       return;
     }
     const seconds = (performance.now() - start) / 1000;
@@ -285,6 +306,8 @@ async function Draw() {
     $('code-drawing').dataset.verdict = compared.passed ? 'pass' : 'fail';
     $('code-drawing').hidden = false;
     $('code-drawing').drawn = drawn;  // the reader's picture, as drawn (the site's test reads it)
+    Beside(name, `yours: ${compared.passed ? 'the same as ours' : 'not the same as ours (the Your code tab shows how)'}`,
+      drawn.pixels, width, height);
     Status(`${name} drawn with your functions in ${seconds.toFixed(1)} s: ${compared.passed ? 'the same as ours' : 'not the same as ours'}`);
   } finally {
     Busy(null);
@@ -465,6 +488,11 @@ function StartYourCode() {
   $('code-open-button').addEventListener('click', () => $('code-open').click());
   $('code-open').addEventListener('change', (event) => { if (event.target.files[0]) Open(event.target.files[0]); event.target.value = ''; });
   $('code-start-over').addEventListener('click', StartOver);
+  document.addEventListener('cgfs-figure', ({ detail }) => DrawBeside(detail));
+  $('controls-mine')?.addEventListener('change', (event) => {
+    if (!event.target.checked) $('controls-yours').hidden = true;
+    else DrawBeside(document.querySelector('#controls input[type="radio"]:checked')?.value);
+  });
   window.addEventListener('beforeunload', Save);
   // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
   document.addEventListener('cgfs-tab', ({ detail }) => {
