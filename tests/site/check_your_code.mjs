@@ -382,6 +382,14 @@ async function CheckEditorMarks() {
   if (!/^TraceRay: /m.test(one) || /CanvasToViewport/.test(one)) Fail(`check TraceRay alone: the page says\n${one}`);
   SameReport('check TraceRay alone', one, cli, '--function TraceRay\'s');
   console.log(`Shift+Ctrl+Enter in TraceRay checked it alone: "${one.split('\n').at(-1)}", as --function TraceRay says`);
+  // "check as I type": a check by itself a second after the typing stops.
+  await browser.Evaluate(`(() => { document.getElementById('code-auto').checked = true; delete ${$('code-report', 'dataset.done')}; })()`);
+  await Type(ours);
+  await browser.WaitFor(`${$('code-report', 'dataset.done')} === 'yes'`, 'a check as one types', 30);
+  const typed = await browser.Evaluate($('code-report', 'textContent'));
+  await browser.Evaluate("document.getElementById('code-auto').checked = false");
+  if (!/^chapter: complete/m.test(typed)) Fail(`check as I type: the report is\n${typed}`);
+  else console.log('"check as I type" checked our reference by itself after the typing stopped');
   // A syntax error: a ✗ on its line, the line tinted.
   await Type('function CanvasToViewport(x, y) {\n  return [x,, y;\n}\n');
   await Check('a syntax error, marked');

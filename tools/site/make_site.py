@@ -382,6 +382,7 @@ kept here, for this chapter and language: nothing is sent anywhere.</p>
 <button type="button" id="code-check-one" disabled>Check one function</button>
 <span id="code-draw-group"><select id="code-figure" aria-label="the figure to draw"></select> <button type="button" id="code-draw">Draw</button></span>
 <button type="button" id="code-stop" hidden>Stop</button>
+<label id="code-auto-label" title="JavaScript: a check a second after you stop typing"><input type="checkbox" id="code-auto"> check as I type</label>
 </div>
 <div class="code-bar code-file-bar"><code id="code-file"></code>
 <button type="button" id="code-download">Download</button>

@@ -32,6 +32,7 @@ const $ = (id) => document.getElementById(id);
 const StorageKey = (chapter, language) => `cgfs-code:${chapter}:${language}`;
 // Which functions of the chapter passed the last full check: read by the index (index.js).
 const ProgressKey = (chapter) => `cgfs-progress:${chapter}`;
+const kTypingPause = 1000;  // milliseconds without typing before "check as I type" checks
 const kMostCode = 1 << 20;  // bytes of code a file or a link may bring (a chapter is a few KB)
 // A link's code (#code=LANGUAGE:DEFLATED-BASE64URL), read before chapter.js rewrites the
 // address for the figure shown.
@@ -71,6 +72,7 @@ function ShowCode(language, code, file) {
   yourCode.file = file ?? Stored(`${StorageKey(yourCode.chapter, language)}:file`) ??
     CGFS_CHECK.fileName(yourCode.chapter, language);
   $('code-language').value = language;
+  $('code-auto-label').hidden = language !== 'javascript';
   $('code-file').textContent = yourCode.file;
   yourCode.editor.setOption('mode', language);
   // Python's blocks are 4 spaces (PEP 8, and the starter's), JavaScript's 2 (the demos').
@@ -473,7 +475,14 @@ function StartYourCode() {
   yourCode.marks = new EditorMarks(yourCode.editor, ShowInReport);
   yourCode.editor.on('cursorActivity', ShowFunctionAtCursor);
   let saving = null;
-  yourCode.editor.on('change', () => { clearTimeout(saving); saving = setTimeout(Save, 500); });
+  let checking = null;
+  yourCode.editor.on('change', () => {
+    clearTimeout(saving);
+    saving = setTimeout(Save, 500);
+    // "check as I type" (JavaScript, whose worker starts at once): a check after a pause.
+    clearTimeout(checking);
+    if ($('code-auto').checked && yourCode.language === 'javascript') checking = setTimeout(() => Check(), kTypingPause);
+  });
   const language = Stored('cgfs-code:language') === 'python' ? 'python' : 'javascript';
   ShowCode(language, OpeningCode(language));
   ListDrawings();
