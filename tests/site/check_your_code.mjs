@@ -498,6 +498,16 @@ async function CheckControls() {
   await Type(ours.replace('TraceRay(P, R, EPSILON, Infinity, recursion_depth - 1)', 'TraceRay(P, R, EPSILON, Infinity, recursion_depth - 2)'));
   await browser.Evaluate("document.getElementById('tab-readme').click()");
   const differs = await beside('fig-4-8-reflections', 'depth 3 with the depth lowered by two');
+  // A figure the reader's functions do not draw: said, and no picture of another left beside it.
+  await browser.Open('05-raytracer-extensions/index.html');
+  await browser.WaitFor(`document.getElementById('live').dataset.ready === 'yes'`, 'chapter 5\'s figures');
+  await browser.Evaluate(`document.getElementById('controls-mine').checked = true`);
+  await browser.Evaluate(chosen('supersampling-4'));
+  const undrawn = await browser.Evaluate(`[document.querySelector('#controls-yours p').textContent,
+    document.querySelector('#controls-yours canvas').hidden]`);
+  if (!/^supersampling-4: not drawn with your functions here \(they draw fig-5-1-camera\)$/.test(undrawn[0]) || !undrawn[1]) {
+    Fail(`chapter 5's supersampling-4 with "draw it with my code too": "${undrawn[0]}", its picture hidden ${undrawn[1]}`);
+  }
   if (same !== 'recursion-depth-5, yours: the same as ours' || !/^fig-4-8-reflections, yours: not the same as ours/.test(differs)) {
     Fail(`the controls with the reader's code: "${same}", then with the depth lowered by two "${differs}"`);
   } else {

@@ -255,7 +255,15 @@ function Beside(name, text, pixels = null, width = 0, height = 0) {
 }
 
 function DrawBeside(name) {
-  if (!$('controls-mine')?.checked || !(name in yourCode.drawings) || $('code-panel').dataset.busy) return;
+  if (!$('controls-mine')?.checked || $('code-panel').dataset.busy) return;
+  if (!(name in yourCode.drawings)) {  // a figure the cases' functions alone do not draw
+    $('controls-yours').hidden = false;
+    $('controls-yours').querySelector('canvas').hidden = true;
+    $('controls-yours').querySelector('p').textContent = `${name}: not drawn with your functions here (they draw ` +
+      `${Object.keys(yourCode.drawings).join(', ')})`;
+    $('controls-yours').dataset.figure = name;
+    return;
+  }
   $('code-figure').value = name;
   $('controls-yours').hidden = false;
   $('controls-yours').querySelector('p').textContent = `${name}: drawing yours…`;
