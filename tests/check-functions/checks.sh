@@ -3,6 +3,7 @@
 # the last run's output, $work/out.txt, has a line matching PATTERN (grep -E);
 # promised CASES LIMIT: the seconds a run may take (below).
 # shellcheck shell=bash
+# shellcheck disable=SC2034,SC2154 # failed is read, and work set, by the script that sources this
 failed=0
 check() {
   local what=$1

@@ -3,6 +3,7 @@
 #
 # expect STATUS DESCRIPTION COMMAND...: the command exits with STATUS; an error
 # (status 2) is exactly one line on standard error.
+# shellcheck shell=bash disable=SC2154 # work is set by the script that sources this
 expect() {
   local want=$1 what=$2
   shift 2
