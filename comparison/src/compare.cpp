@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -225,8 +226,8 @@ long long Tolerance::AllowedDifferingPixels(long long pixels) const {
 std::string DifferenceLegend() {
   std::string legend;
   for (const DifferenceColour& each : kDifferenceColours) {
-    if (!legend.empty()) {
-      legend += &each == &kDifferenceColours[3] ? "; " : ", ";
+    if (!legend.empty()) {  // the last, the pixels within the tolerance, after a ';'
+      legend += &each == std::end(kDifferenceColours) - 1 ? "; " : ", ";
     }
     legend += std::string(each.name) + ": " + each.meaning;
   }

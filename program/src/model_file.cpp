@@ -94,9 +94,8 @@ bool IsSpace(char c) {
 std::vector<std::string_view> Words(std::string_view line, std::size_t most) {
   std::vector<std::string_view> words;
   std::size_t at = 0;
-  const auto space = IsSpace;
   while (at < line.size()) {
-    while (at < line.size() && space(line[at])) {
+    while (at < line.size() && IsSpace(line[at])) {
       ++at;
     }
     if (at == line.size()) {
@@ -104,14 +103,14 @@ std::vector<std::string_view> Words(std::string_view line, std::size_t most) {
     }
     if (words.size() == most) {
       std::size_t end = line.size();
-      while (end > at && space(line[end - 1])) {
+      while (end > at && IsSpace(line[end - 1])) {
         --end;
       }
       words.push_back(line.substr(at, end - at));
       break;
     }
     const std::size_t start = at;
-    while (at < line.size() && !space(line[at])) {
+    while (at < line.size() && !IsSpace(line[at])) {
       ++at;
     }
     words.push_back(line.substr(start, at - start));

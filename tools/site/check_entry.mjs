@@ -6,9 +6,9 @@ import { heldAgainstFile } from '../check-functions/core/account.mjs';
 import { NAMES } from '../check-functions/core/names.mjs';
 import { CASE_LIMIT, LOAD_LIMIT, functionsOf, sections } from '../check-functions/core/plan.mjs';
 import { CheckError, check, stoppedLine } from '../check-functions/core/report.mjs';
-import { carriedForward, definitionLine, defines, fileName, freshStarter, previousChapter } from './starter.mjs';
+import { carriedForward, definitionLine, fileName, freshStarter, previousChapter } from './starter.mjs';
 
 globalThis.CGFS_CHECK = {
-  CASE_LIMIT, CheckError, LOAD_LIMIT, NAMES, carriedForward, check, definitionLine, defines, fileName, freshStarter, functionsOf,
+  CASE_LIMIT, CheckError, LOAD_LIMIT, NAMES, carriedForward, check, definitionLine, fileName, freshStarter, functionsOf,
   heldAgainstFile, previousChapter, sections, stoppedLine,
 };

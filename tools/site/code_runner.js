@@ -126,8 +126,8 @@ class WorkerSupply {
   }
 
   // A worker no code has run in (the oldest made ready). The supply is filled again by
-  // Refill, once the check or draw is over: a worker started meanwhile would take a core
-  // from it.
+  // RefillWorkers, once the check or draw is over: a worker started meanwhile would take
+  // a core from it.
   async Take(onProgress, onStarting = () => {}) {
     if (this.ready.length === 0) this.Fill();
     const entry = this.ready.shift();

@@ -10,7 +10,7 @@ const kZoomScale = 9;    // each drawn this many screen pixels wide
 const kBlinkMilliseconds = 600;
 
 class ComparisonView {
-  // ids: the page's elements, by the names below (make_site.py's your_code_panel).
+  // On the page's elements (make_site.py's your_code_panel), by their ids.
   constructor() {
     const $ = (id) => document.getElementById(id);
     this.canvases = { ours: $('code-ours'), yours: $('code-yours'), difference: $('code-difference') };
@@ -159,9 +159,12 @@ class ComparisonView {
           context.fillRect((dx + half) * kZoomScale, (dy + half) * kZoomScale, kZoomScale, kZoomScale);
         }
       }
-      context.lineWidth = 2;
-      context.strokeStyle = '#e00';
-      context.strokeRect(half * kZoomScale, half * kZoomScale, kZoomScale, kZoomScale);
+      // black and white, seen on any colour
+      for (const [color, width] of [['#000', 3], ['#fff', 1]]) {
+        context.lineWidth = width;
+        context.strokeStyle = color;
+        context.strokeRect(half * kZoomScale, half * kZoomScale, kZoomScale, kZoomScale);
+      }
     }
     const where = document.getElementById('code-zoom-where');
     where.textContent = `Magnified: ${what}, column ${column}, row ${row} from the top left: ` +
