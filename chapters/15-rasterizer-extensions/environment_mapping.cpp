@@ -43,7 +43,11 @@ CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
     const auto face = static_cast<CubeFace>(f);
     surroundings.camera = {centre, CubeFaceOrientation(face)};
     Canvas canvas(size, size);
-    RenderView(surroundings, CubeFaceClippingPlanes(d, size), canvas, {});
+    DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
+    Frame frame(canvas, depth_buffer, surroundings.viewport);
+    PhongSteps none;
+    RenderView(surroundings, CubeFaceClippingPlanes(d, size), {}, AllLights(surroundings), frame,
+               none);
     cube_map.faces[static_cast<std::size_t>(f)] = TextureFromImage(canvas.GetImage());
   }
   return cube_map;

@@ -1,8 +1,6 @@
 #include "extensions.h"
 
-#include <algorithm>
-#include <memory>
-
+#include "multipass_lighting.h"
 #include "normal_mapping.h"
 #include "scene_rendering.h"
 
@@ -28,21 +26,35 @@ Maps RenderMaps(const Scene& scene, const Extensions& extensions) {
   return maps;
 }
 
-// The stages' steps in a triangle's Phong shading: its normal bent by its model's normal
-// map ("Normal Mapping"), the light each shadow map lets reach the point ("Shadow
-// Mapping"), then the reflection mixed in ("Environment Mapping"). A stage that is off
-// has nothing to add: no map.
+// The stages' steps in Phong shading, one object for the whole render: the normal bent
+// by the model's normal map ("Normal Mapping"), the light each shadow map of the pass's
+// lights lets reach the point ("Shadow Mapping"), then the reflection mixed in
+// ("Environment Mapping"). A stage that is off has nothing to add: no map.
 class Stages final : public PhongSteps {
  public:
-  Stages(const Texture* normal_map, const std::array<ShadedCorner, 3>& corners,
-         std::vector<const ShadowMap*> shadow_maps, const CubeMap* environment, double reflective,
-         bool first_pass, const glm::dmat4& camera_to_world)
-      : normal_map_(normal_map),
-        shadow_maps_(std::move(shadow_maps)),
-        environment_(environment),
-        reflective_(reflective),
-        first_pass_(first_pass),
-        camera_to_world_(camera_to_world) {
+  Stages(const Scene& scene, const Maps& maps, const Extensions& extensions)
+      : scene_(scene),
+        maps_(maps),
+        normal_mapping_(extensions.normal_mapping),
+        camera_to_world_(
+            glm::inverse(MakeCameraMatrix(scene.camera.position, scene.camera.orientation))) {}
+
+  void BeginInstance(std::size_t instance, const LightsOfPass& pass) override {
+    const Model& model = *scene_.instances[instance].model;
+    normal_map_ = normal_mapping_ ? model.normal_map : nullptr;
+    const std::optional<CubeMap>& environment = maps_.environments[instance];
+    environment_ = environment ? &*environment : nullptr;
+    reflective_ = model.reflective;
+    first_pass_ = pass.first;
+    shadow_maps_.clear();
+    for (const std::size_t k : pass.lights) {
+      if (!maps_.shadow_maps.empty()) {
+        shadow_maps_.push_back(&maps_.shadow_maps[k]);
+      }
+    }
+  }
+
+  void BeginTriangle(const std::array<ShadedCorner, 3>& corners) override {
     if (normal_map_) {
       tangents_ =
           ComputeTangentBasis({corners[0].position, corners[1].position, corners[2].position},
@@ -61,58 +73,39 @@ class Stages final : public PhongSteps {
   }
 
  private:
-  const Texture* normal_map_;
-  TangentBasis tangents_;
-  std::vector<const ShadowMap*> shadow_maps_;
-  const CubeMap* environment_;
-  double reflective_;
-  bool first_pass_;
+  const Scene& scene_;
+  const Maps& maps_;
+  bool normal_mapping_;
   glm::dmat4 camera_to_world_;
+  // The instance being drawn, and the pass.
+  const Texture* normal_map_ = nullptr;
+  std::vector<const ShadowMap*> shadow_maps_;
+  const CubeMap* environment_ = nullptr;
+  double reflective_ = 0;
+  bool first_pass_ = true;
+  // The triangle being drawn.
+  TangentBasis tangents_;
 };
-
-// The stages' steps for each triangle the camera's view draws, from the maps.
-ViewDrawing WithStages(const Scene& scene, const Maps& maps, const Extensions& extensions) {
-  const glm::dmat4 camera_to_world =
-      glm::inverse(MakeCameraMatrix(scene.camera.position, scene.camera.orientation));
-  ViewDrawing drawing;
-  drawing.multipass_lighting = extensions.multipass_lighting;
-  if (extensions.shadows == Shadows::kShadowVolumes) {
-    drawing.shadow_volumes = extensions.shadow_volume_counting;
-  }
-  const bool any_map = !maps.shadow_maps.empty() ||
-                       std::any_of(maps.environments.begin(), maps.environments.end(),
-                                   [](const auto& environment) { return environment.has_value(); });
-  if (!extensions.normal_mapping && !any_map) {
-    return drawing;  // no stage adds anything to the shading
-  }
-  drawing.phong_steps = [&scene, &maps, extensions, camera_to_world](const TriangleInView& drawn) {
-    const Model& model = *scene.instances[drawn.instance].model;
-    std::vector<const ShadowMap*> shadow_maps;
-    for (const std::size_t k : drawn.lights) {
-      if (!maps.shadow_maps.empty()) {
-        shadow_maps.push_back(&maps.shadow_maps[k]);
-      }
-    }
-    const std::optional<CubeMap>& environment = maps.environments[drawn.instance];
-    return std::make_unique<Stages>(extensions.normal_mapping ? model.normal_map : nullptr,
-                                    drawn.corners, std::move(shadow_maps),
-                                    environment ? &*environment : nullptr, model.reflective,
-                                    drawn.first_pass, camera_to_world);
-  };
-  return drawing;
-}
 
 }  // namespace
 
-// "The Clipping Pipeline": model space to camera space with one matrix per
-// instance, then clipping, then projection. Clipping happens in camera space, where
-// the clipping volume does not depend on the camera. What survives lies beyond the
-// near plane, so RenderObject (Listing 10-1) can project and draw it. "Extending the
-// Rasterizer": first the maps the stages read, each made by rendering the scene from
-// elsewhere, then the view from the camera, in one pass or in passes.
+// "Extending the Rasterizer": first the maps the stages read, each made by drawing the
+// scene from elsewhere, then the view from the camera through the clipping volume, in
+// one pass or in passes, into one depth-buffered frame.
 void RenderScene(const Scene& scene, Canvas& canvas, const Shading& shading,
                  const Extensions& extensions) {
   const Maps maps = RenderMaps(scene, extensions);
-  RenderView(scene, ClippingPlanes(scene.viewport.distance), canvas, shading,
-             WithStages(scene, maps, extensions));
+  Stages stages(scene, maps, extensions);
+  DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
+  Frame frame(canvas, depth_buffer, scene.viewport);
+  const std::vector<Plane> planes = ClippingPlanes(scene.viewport.distance);
+  if (extensions.multipass_lighting || extensions.shadows == Shadows::kShadowVolumes) {
+    std::optional<ShadowVolumeCounting> counting;
+    if (extensions.shadows == Shadows::kShadowVolumes) {
+      counting = extensions.shadow_volume_counting;
+    }
+    RenderInPasses(scene, planes, shading, counting, frame, stages);
+  } else {
+    RenderView(scene, planes, shading, AllLights(scene), frame, stages);
+  }
 }

@@ -55,3 +55,53 @@ void PassWrite(const Pass& pass, Canvas& canvas, int x, int y, const Color& colo
     pass.sum->Add(x, y, color);
   }
 }
+
+namespace {
+
+// The stencil cleared, then every shadow volume the closed occluders cast from `light`
+// (in camera space, like `unclipped`) counted into it.
+void MarkShadowVolumes(const CameraSpaceScene& unclipped, const Light& light,
+                       const std::vector<Plane>& planes, ShadowVolumeCounting counting,
+                       const Frame& frame, StencilBuffer& stencil) {
+  stencil.Clear();
+  for (const CameraSpaceInstance& I : unclipped.instances) {
+    if (I.model.closed) {
+      MarkShadowVolume(BuildShadowVolume(I.model, light), planes, frame.canvas, frame.viewport,
+                       frame.depth_buffer, stencil, counting);
+    }
+  }
+}
+
+}  // namespace
+
+void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const Shading& shading,
+                    const std::optional<ShadowVolumeCounting>& counting, Frame& frame,
+                    PhongSteps& steps) {
+  const glm::dmat4 M_camera = MakeCameraMatrix(scene.camera.position, scene.camera.orientation);
+  const CameraSpaceScene unclipped = SceneInView(scene, M_camera);
+  const std::vector<Light> lights = TransformLights(scene.lights, M_camera);
+  AccumulationBuffer sum(frame.canvas);
+  StencilBuffer stencil(frame.canvas);
+  LightsOfPass ambient;
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    if (lights[k].type == LightType::kAmbient) {
+      ambient.lights.push_back(k);
+    }
+  }
+  PassFrame first(frame.canvas, frame.depth_buffer, frame.viewport, {&sum, true, nullptr});
+  RenderView(scene, planes, shading, ambient, first, steps);
+
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    if (lights[k].type == LightType::kAmbient) {
+      continue;
+    }
+    if (counting) {
+      MarkShadowVolumes(unclipped, lights[k], planes, *counting, frame, stencil);
+    }
+    sum.BeginPass();
+    PassFrame pass(frame.canvas, frame.depth_buffer, frame.viewport,
+                   {&sum, false, counting ? &stencil : nullptr});
+    RenderView(scene, planes, shading, {{k}, false}, pass, steps);
+  }
+  sum.WriteTo(frame.canvas);
+}

@@ -4,11 +4,14 @@
 // the end: clamping each pass would lose whatever light a pass had above 255.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "canvas_grid.h"
 #include "depth_buffer.h"
+#include "scene_rendering.h"
 #include "shading.h"
+#include "shadow_volumes.h"
 #include "stencil_buffer.h"
 
 // A floating-point colour per pixel of the canvas: the sum of the passes so far.
@@ -75,3 +78,13 @@ struct PassFrame : Frame {
   }
   void Write(int x, int y, const Color& color) override { PassWrite(pass, canvas, x, y, color); }
 };
+
+// "Stencil Shadows": the view drawn in passes (RenderView, each pass with its lights)
+// into `frame`. First the ambient light alone, which also fills the depth buffer; then,
+// for each other light, the shadow volumes of the closed occluders counted into the
+// stencil (if `counting` is given), and the scene lit by that light alone added where
+// the stencil is 0. The sum is clamped once, onto the frame's canvas. A volume is cast
+// by the whole occluder, seen or not: it is built from the scene before clipping.
+void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const Shading& shading,
+                    const std::optional<ShadowVolumeCounting>& counting, Frame& frame,
+                    PhongSteps& steps);

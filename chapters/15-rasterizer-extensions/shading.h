@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -157,12 +158,26 @@ struct PhongPixel {
   std::vector<double> visibility;
 };
 
-// What a renderer adds to Phong shading at each pixel of a triangle: Before may bend
-// the normal and keep light from the point, After may change the lit colour. These add
-// nothing; chapter 15's stages do (extensions.cpp).
+// The lights a view is drawn with, as indices among the scene's lights, and whether
+// this is the frame's first pass (or its only one): multi-pass lighting draws a view
+// once per light.
+struct LightsOfPass {
+  std::vector<std::size_t> lights;
+  bool first = true;
+};
+
+// What a renderer adds to Phong shading, as one object for a whole render (the
+// shader of tinyrenderer's rasteriser): set up for each instance a pass draws and for
+// each triangle, then at each pixel Before may bend the normal and keep light from the
+// point, After may change the lit colour. These add nothing; chapter 15's stages do
+// (extensions.cpp).
 class PhongSteps {
  public:
   virtual ~PhongSteps() = default;
+  // The scene's instance `instance` is drawn next, in `pass`.
+  virtual void BeginInstance(std::size_t /*instance*/, const LightsOfPass& /*pass*/) {}
+  // Its triangle with these corners is shaded next.
+  virtual void BeginTriangle(const std::array<ShadedCorner, 3>& /*corners*/) {}
   virtual void Before(PhongPixel& /*pixel*/) const {}
   virtual Color After(const PhongPixel& /*pixel*/, const Color& lit) const { return lit; }
 };

@@ -177,30 +177,37 @@ glm::dmat4 LookAlong(const Vec3& forward) {
                     glm::dvec4(0, 0, 0, 1));
 }
 
-// A point light's view: every instance in the view's space, clipped like a cube map's
-// face, drawn with the depth-buffered DrawFilledTriangle (the colours are not kept).
-DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& world_to_view, int size) {
-  Canvas canvas(size, size);
+// A frame that keeps only the depths: a shadow map's view needs no colour.
+struct DepthOnlyFrame final : Frame {
+  using Frame::Frame;
+  void Write(int /*x*/, int /*y*/, const Color& /*color*/) override {}
+};
+
+// A point light's view: the scene drawn from the light like a cube map's face
+// (RenderView, flat and unlit, no step added, back faces drawn), into a frame that
+// keeps only the depths.
+DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& orientation, const Vec3& position,
+                         int size) {
+  Scene from_light = scene;
   const double d = NearPlaneOfMaps(scene);
-  const Viewport viewport{2 * d, 2 * d, d};
+  from_light.viewport = {2 * d, 2 * d, d};
+  from_light.camera = {position, orientation};
+  Canvas canvas(size, size);
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  for (const CameraSpaceInstance& I :
-       ClipScene(SceneInView(scene, world_to_view), CubeFaceClippingPlanes(d, size)).instances) {
-    const auto& V = I.model.vertices;
-    for (const Triangle& T : I.model.triangles) {
-      DrawFilledTriangle(ProjectVertex(V[T.v[0]], canvas, viewport),
-                         ProjectVertex(V[T.v[1]], canvas, viewport),
-                         ProjectVertex(V[T.v[2]], canvas, viewport), V[T.v[0]].z, V[T.v[1]].z,
-                         V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
-    }
-  }
-  return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
+  DepthOnlyFrame frame(canvas, depth_buffer, from_light.viewport);
+  Shading unlit;
+  unlit.model = ShadingModel::kFlat;
+  PhongSteps none;
+  RenderView(from_light, CubeFaceClippingPlanes(d, size), unlit, {}, frame, none,
+             BackFaces::kDrawn);
+  return {size, DepthsOf(depth_buffer, size), MakeCameraMatrix(position, orientation), false, 1};
 }
 
 // A directional light's view: orthographic, so a point (x, y, z) of the view's
 // space lands at (x, y) scaled to the canvas, whatever its z; z is linear across the
 // canvas then, and the depth buffer stores z itself. The view stands beyond the
-// scene, so nothing needs clipping.
+// scene, so nothing needs clipping. RenderView projects in perspective (ProjectVertex),
+// so this view draws its triangles itself, with chapter 12's DrawFilledTriangle.
 DepthMap OrthographicView(const Scene& scene, const Vec3& direction, int size) {
   const BoundingSphere bounds = SceneBounds(scene);
   const Vec3 forward = -glm::normalize(direction);
@@ -233,7 +240,7 @@ ShadowMap RenderShadowMap(const Scene& scene, const Light& light, const ShadowMa
     for (int f = 0; f < 6; ++f) {
       const glm::dmat4 orientation = CubeFaceOrientation(static_cast<CubeFace>(f));
       shadow_map.views.push_back(
-          PerspectiveView(scene, MakeCameraMatrix(light.position, orientation), settings.size));
+          PerspectiveView(scene, orientation, light.position, settings.size));
     }
   } else if (light.type == LightType::kDirectional) {
     shadow_map.views.push_back(OrthographicView(scene, light.direction, settings.size));

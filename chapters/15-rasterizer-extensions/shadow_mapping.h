@@ -81,7 +81,9 @@ double LightVisibility(const ShadowMap& shadow_map, const Vec3& P, const Vec3& N
 
 // The entry a lookup without filtering reads for world-space point P (the one nearest
 // the point), as one number: view x size x size + row x size + column; empty for a point
-// outside every view.
+// outside every view. The number LightVisibility records; declared here so that the
+// tests can hold the cost view's entries against an independent ray caster, which
+// reaches the map only through this header.
 std::optional<long> ShadowMapEntry(const ShadowMap& shadow_map, const Vec3& P);
 inline constexpr cgfs::Counter kShadowMapEntries{"shadow-map entries read"};
 
