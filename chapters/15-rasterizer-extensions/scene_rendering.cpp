@@ -39,13 +39,11 @@ void RenderTriangle(const Triangle& triangle, const Model& object,
     corners[k] = {object.vertices[i], projected[i], triangle.normals[k], triangle.uvs[k]};
   }
   steps.BeginTriangle(corners);
-  ShadeTriangle(corners, {triangle.color, object.specular, object.texture}, lighting, frame,
-                steps);
+  ShadeTriangle(corners, {triangle.color, object.specular, object.texture}, lighting, frame, steps);
 }
 
 // Listing 10-1.
-void RenderObject(const Model& object, const Lighting& lighting, Frame& frame,
-                  PhongSteps& steps) {
+void RenderObject(const Model& object, const Lighting& lighting, Frame& frame, PhongSteps& steps) {
   const std::vector<Point> projected =
       ProjectUsedVertices(object.vertices, object.triangles, frame.canvas, frame.viewport);
   for (const Triangle& T : object.triangles) {

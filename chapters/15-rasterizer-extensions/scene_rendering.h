@@ -25,8 +25,7 @@ void RenderTriangle(const Triangle& triangle, const Model& object,
 // Listing 10-1: projects every vertex once (each is shared by several triangles),
 // then draws every triangle; with the depth buffer their order does not matter.
 // Every vertex must lie beyond the projection plane (see ProjectVertex).
-void RenderObject(const Model& object, const Lighting& lighting, Frame& frame,
-                  PhongSteps& steps);
+void RenderObject(const Model& object, const Lighting& lighting, Frame& frame, PhongSteps& steps);
 
 // "The Clipping Pipeline", its first step: the scene's instances in the space of the
 // view whose camera matrix is M_camera, one matrix per instance.
