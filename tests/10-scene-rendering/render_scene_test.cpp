@@ -17,4 +17,3 @@ TEST_CASE("RenderScene puts instance A's corners where figure 10-10's worked mat
   CHECK_FALSE(canvas.GetPixel(-91, -24) == white);
   CHECK_FALSE(canvas.GetPixel(-218, -258) == white);
 }
-

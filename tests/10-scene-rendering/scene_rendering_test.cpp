@@ -141,11 +141,10 @@ TEST_CASE("ApplyTransform: the cases of 10-scene-rendering.json", "[transform]")
        cgfs::test::CasesOf("10-scene-rendering.json", "ApplyTransform")) {
     INFO(c.Describe());
     const nlohmann::json& transform = c.args.at("transform");
-    const Vec3 moved = ApplyTransform(
-        cgfs::test::ToVector(c.args.at("vertex")),
-        Transform{cgfs::test::ToNumber(transform.at("scale")),
-                  cgfs::test::ToMatrix(transform.at("rotation")),
-                  cgfs::test::ToVector(transform.at("translation"))});
+    const Vec3 moved = ApplyTransform(cgfs::test::ToVector(c.args.at("vertex")),
+                                      Transform{cgfs::test::ToNumber(transform.at("scale")),
+                                                cgfs::test::ToMatrix(transform.at("rotation")),
+                                                cgfs::test::ToVector(transform.at("translation"))});
     CHECK_THAT(cgfs::test::AsNumbers(moved), cgfs::test::MatchesCase(c));
   }
 }

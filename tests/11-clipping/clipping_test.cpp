@@ -65,7 +65,8 @@ TEST_CASE("ClippingPlanes: the five planes of the clipping volume have unit norm
 
 TEST_CASE("SignedDistance: the cases of 11-clipping.json", "[clipping]") {
   // The first two: the left plane's hand-worked 3.535534 and -0.707107.
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "SignedDistance")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("11-clipping.json", "SignedDistance")) {
     INFO(c.Describe());
     const double distance =
         SignedDistance(PlaneOfCase(c.args.at("plane")), cgfs::test::ToVector(c.args.at("vertex")));
@@ -82,10 +83,12 @@ TEST_CASE("SignedDistance: ClippingPlanes' left plane, and sideways along the ne
 }
 
 TEST_CASE("Intersection: the cases of 11-clipping.json", "[clipping]") {
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "Intersection")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("11-clipping.json", "Intersection")) {
     INFO(c.Describe());
-    const Vec3 Q = Intersection(cgfs::test::ToVector(c.args.at("A")),
-                                cgfs::test::ToVector(c.args.at("B")), PlaneOfCase(c.args.at("plane")));
+    const Vec3 Q =
+        Intersection(cgfs::test::ToVector(c.args.at("A")), cgfs::test::ToVector(c.args.at("B")),
+                     PlaneOfCase(c.args.at("plane")));
     CHECK_THAT(cgfs::test::AsNumbers(Q), cgfs::test::MatchesCase(c));
   }
 }
@@ -101,7 +104,8 @@ TEST_CASE("IntersectionT: the t of a segment's crossing, for every attribute", "
 }
 
 TEST_CASE("ClipTriangle: the cases of 11-clipping.json", "[clipping]") {
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("11-clipping.json", "ClipTriangle")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("11-clipping.json", "ClipTriangle")) {
     INFO(c.Describe());
     std::vector<Vec3> vertices;
     for (const nlohmann::json& vertex : c.args.at("vertices")) {

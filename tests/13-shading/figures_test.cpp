@@ -112,7 +112,8 @@ TEST_CASE("gouraud-triangle-normals-specular matches its golden image", "[golden
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "gouraud-triangle-normals-specular");
 }
 
-TEST_CASE("fig-13-3-gouraud-triangle-normals-diffuse-specular matches its golden image", "[golden]") {
+TEST_CASE("fig-13-3-gouraud-triangle-normals-diffuse-specular matches its golden image",
+          "[golden]") {
   CheckAgainstGolden(CGFS_CHAPTER, Figures(), "fig-13-3-gouraud-triangle-normals-diffuse-specular");
 }
 

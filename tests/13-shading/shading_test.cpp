@@ -60,12 +60,14 @@ Canvas RenderWith(const Scene& scene, const Shading& shading) {
 }  // namespace
 
 TEST_CASE("UnProjectVertex: the cases of 13-shading.json", "[shading]") {
-  for (const cgfs::test::FunctionCase& c : cgfs::test::CasesOf("13-shading.json", "UnProjectVertex")) {
+  for (const cgfs::test::FunctionCase& c :
+       cgfs::test::CasesOf("13-shading.json", "UnProjectVertex")) {
     INFO(c.Describe());
     const nlohmann::json& size = c.given.at("canvas");
     const nlohmann::json& viewport = c.given.at("viewport");
     const Vec3 P = UnProjectVertex(
-        c.args.at("x").get<int>(), c.args.at("y").get<int>(), cgfs::test::ToNumber(c.args.at("inv_z")),
+        c.args.at("x").get<int>(), c.args.at("y").get<int>(),
+        cgfs::test::ToNumber(c.args.at("inv_z")),
         Canvas(size.at("width").get<int>(), size.at("height").get<int>()),
         Viewport{viewport.at("width").get<double>(), viewport.at("height").get<double>(),
                  viewport.at("d").get<double>()});

@@ -22,13 +22,19 @@ const { files } = JSON.parse(fs.readFileSync(path.join(corpus, "corpus.json"), "
 fs.rmSync(work, { recursive: true, force: true });
 fs.mkdirSync(work, { recursive: true });
 
-let failed = 0, checks = 0;
+let failed = 0,
+  checks = 0;
 const check = (what, ok, output = "") => {
   checks++;
   console.log(`${ok ? "ok" : "FAIL"}: ${what}`);
   if (!ok) {
     failed++;
-    console.log(output.split("\n").map((line) => `    ${line}`).join("\n"));
+    console.log(
+      output
+        .split("\n")
+        .map((line) => `    ${line}`)
+        .join("\n"),
+    );
   }
 };
 
@@ -45,7 +51,10 @@ function pathWith(module) {
 
 function run(chapter, file, adapter, envPath) {
   const args = [checker, chapter, file, ...(adapter ? ["--adapter", adapter] : [])];
-  const result = spawnSync("node", args, { encoding: "utf8", env: { ...process.env, PATH: envPath } });
+  const result = spawnSync("node", args, {
+    encoding: "utf8",
+    env: { ...process.env, PATH: envPath },
+  });
   return { status: result.status, output: `${result.stdout}${result.stderr}` };
 }
 
@@ -79,30 +88,56 @@ for (const entry of files) {
   const as = run(chapter, file, adapter, envPath);
   if (entry.differs) {
     const lines = block(as.output, entry.differs.function);
-    check(`${entry.file}: where it differs from the book, ${entry.differs.function} fails with one line saying why`,
-      as.status === 1 && /FAILED/.test(lines[0] ?? "") && new RegExp(entry.differs.first).test(lines[1] ?? ""), as.output);
-    check(`${entry.file}: and every other function passes`,
-      as.output.split("\n").filter((line) => /^  \S/.test(line) && !line.includes(entry.differs.function))
-        .every((line) => / passed \(| not checked against /.test(line)), as.output);
+    check(
+      `${entry.file}: where it differs from the book, ${entry.differs.function} fails with one line saying why`,
+      as.status === 1 &&
+        /FAILED/.test(lines[0] ?? "") &&
+        new RegExp(entry.differs.first).test(lines[1] ?? ""),
+      as.output,
+    );
+    check(
+      `${entry.file}: and every other function passes`,
+      as.output
+        .split("\n")
+        .filter((line) => /^  \S/.test(line) && !line.includes(entry.differs.function))
+        .every((line) => / passed \(| not checked against /.test(line)),
+      as.output,
+    );
   } else {
-    check(`${entry.file} (${entry.style}): complete as written`, as.status === 0 && /^chapter: complete /m.test(as.output), as.output);
+    check(
+      `${entry.file} (${entry.style}): complete as written`,
+      as.status === 0 && /^chapter: complete /m.test(as.output),
+      as.output,
+    );
   }
-  for (const mistake of withMistakes ? entry.mistakes ?? [] : []) {
+  for (const mistake of withMistakes ? (entry.mistakes ?? []) : []) {
     if (!original.includes(mistake.find)) {
-      check(`${entry.file}: the mistake's text is in the file: ${JSON.stringify(mistake.find)}`, false);
+      check(
+        `${entry.file}: the mistake's text is in the file: ${JSON.stringify(mistake.find)}`,
+        false,
+      );
       continue;
     }
     fs.writeFileSync(file, original.replace(mistake.find, mistake.replace));
     const got = run(chapter, file, adapter, envPath);
     const lines = block(got.output, mistake.function);
-    check(`${entry.file}: ${JSON.stringify(mistake.replace.trim() || `no ${mistake.find.trim()}`)} fails ${mistake.function}, ` +
-      `first: ${mistake.first}`, got.status === 1 && /FAILED/.test(lines[0] ?? "") && new RegExp(mistake.first).test(lines[1] ?? ""),
-    got.output);
+    check(
+      `${entry.file}: ${JSON.stringify(mistake.replace.trim() || `no ${mistake.find.trim()}`)} fails ${mistake.function}, ` +
+        `first: ${mistake.first}`,
+      got.status === 1 &&
+        /FAILED/.test(lines[0] ?? "") &&
+        new RegExp(mistake.first).test(lines[1] ?? ""),
+      got.output,
+    );
   }
   fs.writeFileSync(file, original);
 }
-console.log(`corpus: ${[...styles].map(([language, count]) => `${count} ${language}`).join(", ")} files, ${checks} checks`);
+console.log(
+  `corpus: ${[...styles].map(([language, count]) => `${count} ${language}`).join(", ")} files, ${checks} checks`,
+);
 if (failed === 0) {
-  console.log(`PASS: the corpus passes as written${withMistakes ? ", and every planted mistake is caught where it is" : ""}`);
+  console.log(
+    `PASS: the corpus passes as written${withMistakes ? ", and every planted mistake is caught where it is" : ""}`,
+  );
 }
 process.exit(failed ? 1 : 0);

@@ -30,10 +30,7 @@ def png(path, side):
 
     def chunk(kind, body):
         return (
-            struct.pack(">I", len(body))
-            + kind
-            + body
-            + struct.pack(">I", zlib.crc32(kind + body))
+            struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
         )
 
     header = struct.pack(">IIBBBBB", side, side, 8, 2, 0, 0, 0)
@@ -63,8 +60,7 @@ def sphere(path, n, m, head):
             ]
             out.write(
                 "".join(
-                    f"v {x:.6f} {y:.6f} {z:.6f}\nvn {x:.5f} {y:.5f} {z:.5f}\n"
-                    for x, y, z in ring
+                    f"v {x:.6f} {y:.6f} {z:.6f}\nvn {x:.5f} {y:.5f} {z:.5f}\n" for x, y, z in ring
                 )
             )
             out.write("".join(f"vt {j / n:.5f} {i / m:.5f}\n" for j in range(n)))
@@ -94,8 +90,7 @@ def cases(slow):
     }
     strip = "".join(f"v {k} {k % 2} 0\n" for k in range(100_002))
     yield "groups", "quick", "drawn", {
-        "m.obj": strip
-        + "".join(f"g a\nf {k} {k + 1} {k + 2}\n" for k in range(1, 100_001))
+        "m.obj": strip + "".join(f"g a\nf {k} {k + 1} {k + 2}\n" for k in range(1, 100_001))
     }
     yield "materials", "quick", "drawn", {
         "m.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl m\nf 1 2 3\n",
@@ -111,26 +106,19 @@ def cases(slow):
         "m.obj": "mtllib gone.mtl\n" * 300_000 + TRIANGLE + "f 1 2 3\n"
     }
     yield "material-switches", "quick", "refused", {
-        "m.obj": "mtllib m.mtl\n"
-        + TRIANGLE
-        + "usemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n" * 40_000,
+        "m.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n" * 40_000,
         "m.mtl": "newmtl a\nnewmtl b\n",
     }
     textured = "mtllib m.mtl\n" + TRIANGLE + "vt 0 0\nvt 1 0\nvt 0 1\n"
     yield "one-texture-many-materials", "quick", "drawn", {
-        "m.obj": textured
-        + "".join(f"usemtl m{k}\nf 1/1 2/2 3/3\n" for k in range(300)),
+        "m.obj": textured + "".join(f"usemtl m{k}\nf 1/1 2/2 3/3\n" for k in range(300)),
         "m.mtl": "".join(f"newmtl m{k}\nmap_Kd t.png\n" for k in range(300)),
         "t.png": lambda path: png(path, 2048),
     }
     yield "many-textures", "quick", "drawn", {
-        "m.obj": textured
-        + "".join(f"usemtl m{k}\nf 1/1 2/2 3/3\n" for k in range(400)),
+        "m.obj": textured + "".join(f"usemtl m{k}\nf 1/1 2/2 3/3\n" for k in range(400)),
         "m.mtl": "".join(f"newmtl m{k}\nmap_Kd t{k}.png\n" for k in range(400)),
-        **{
-            f"t{k}.png": (lambda k: lambda path: png(path, 4 + k % 7))(k)
-            for k in range(400)
-        },
+        **{f"t{k}.png": (lambda k: lambda path: png(path, 4 + k % 7))(k) for k in range(400)},
     }
     big = "".join(f"v {k} {k % 7} {k % 5}\n" for k in range(1_000_000))
     yield "textured-parts", "slow", "drawn", {
@@ -138,26 +126,18 @@ def cases(slow):
         + big
         + "vt 0 0\nvt 1 0\nvt 0 1\n"
         + "".join(
-            f"usemtl m{k}\nf {3 * k + 1}/1 {3 * k + 2}/2 {3 * k + 3}/3\n"
-            for k in range(400)
+            f"usemtl m{k}\nf {3 * k + 1}/1 {3 * k + 2}/2 {3 * k + 3}/3\n" for k in range(400)
         ),
         "m.mtl": "".join(f"newmtl m{k}\nmap_Kd t{k}.png\n" for k in range(400)),
-        **{
-            f"t{k}.png": (lambda k: lambda path: png(path, 4 + k % 7))(k)
-            for k in range(400)
-        },
+        **{f"t{k}.png": (lambda k: lambda path: png(path, 4 + k % 7))(k) for k in range(400)},
     }
     yield "coincident", "quick", "refused", {"m.obj": TRIANGLE + "f 1 2 3\n" * 100_000}
-    yield "coincident-at-the-bound", "slow", "drawn", {
-        "m.obj": TRIANGLE + "f 1 2 3\n" * 1_565
-    }
+    yield "coincident-at-the-bound", "slow", "drawn", {"m.obj": TRIANGLE + "f 1 2 3\n" * 1_565}
     slivers = "".join(
-        f"v {k * 1e-4} 0 0\nv {1 + k * 1e-4} 1 0\nv {1 + k * 1e-4} 1.002 0\n"
-        for k in range(1_560)
+        f"v {k * 1e-4} 0 0\nv {1 + k * 1e-4} 1 0\nv {1 + k * 1e-4} 1.002 0\n" for k in range(1_560)
     )
     yield "slivers-at-the-bound", "slow", "drawn", {
-        "m.obj": slivers
-        + "".join(f"f {3 * k + 1} {3 * k + 2} {3 * k + 3}\n" for k in range(1_560))
+        "m.obj": slivers + "".join(f"f {3 * k + 1} {3 * k + 2} {3 * k + 3}\n" for k in range(1_560))
     }
     yield "largest-textured", "slow", "drawn", {
         "m.obj": lambda path: sphere(path, 866, 433, "mtllib m.mtl\nusemtl m\n"),
@@ -165,9 +145,7 @@ def cases(slow):
         "t.png": lambda path: png(path, 2048),
     }
     yield "index-wraps", "quick", "refused", {"m.obj": TRIANGLE + "f 1 2 4294967299\n"}
-    yield "index-digits", "quick", "refused", {
-        "m.obj": TRIANGLE + "f 1 2 99999999999\n"
-    }
+    yield "index-digits", "quick", "refused", {"m.obj": TRIANGLE + "f 1 2 99999999999\n"}
     yield "huge-coordinates", "quick", "drawn", {
         "m.obj": "v 0 0 0\nv 1e150 0 0\nv 0 1e150 0\nf 1 2 3\n"
     }
@@ -227,8 +205,7 @@ def run(command):
     lines = [
         line
         for line in lines
-        if not line.startswith("cgfs-peak-kb ")
-        and not line.startswith("Command exited")
+        if not line.startswith("cgfs-peak-kb ") and not line.startswith("Command exited")
     ]
     kb, user, system = peak[-1].split()[1:] if peak else (0, 0, 0)
     return done.returncode, lines, int(kb) / 1024, float(user) + float(system)
@@ -238,9 +215,7 @@ def main():
     build, work = sys.argv[1], sys.argv[2]
     slow = "--slow" in sys.argv[3:]
     if not os.access("/usr/bin/time", os.X_OK):
-        print(
-            "FAIL: no /usr/bin/time (GNU time, Debian's 'time': scripts/setup installs it)"
-        )
+        print("FAIL: no /usr/bin/time (GNU time, Debian's 'time': scripts/setup installs it)")
         return 1
     shutil.rmtree(work, ignore_errors=True)
     for name, tier, expected, files in cases(slow):
@@ -268,19 +243,11 @@ def main():
             )
             said = f"{name}, {chapter}: exit {status}, {len(lines)} lines, {peak:.0f} MB, {took:.1f} s of processor"
             if expected == "refused":
-                ok = (
-                    status == 2
-                    and len(lines) == 1
-                    and f"{chapter}: error: " in lines[0]
-                )
+                ok = status == 2 and len(lines) == 1 and f"{chapter}: error: " in lines[0]
                 check(f"{said}: refused in one line ({lines[0] if lines else ''})", ok)
             else:
                 warnings = [line for line in lines if ": warning: " in line]
-                ok = (
-                    status == 0
-                    and warnings == lines
-                    and len(set(warnings)) == len(warnings) <= 4
-                )
+                ok = status == 0 and warnings == lines and len(set(warnings)) == len(warnings) <= 4
                 check(f"{said}: drawn, each warning said once", ok)
                 if not ok:
                     print("\n".join(lines[:5]))

@@ -3,14 +3,17 @@
 // from the site's folder, keys, mouse drags, files chosen, and what the page evaluates.
 // Every request the browser makes is heard: one that leaves this machine (anything but a
 // file of the site, a Blob, data or 127.0.0.1) is kept in `outside`, for a test to fail on.
-import {spawn, execFileSync} from 'node:child_process';
-import {mkdtempSync, rmSync} from 'node:fs';
-import {tmpdir} from 'node:os';
-import {join} from 'node:path';
+import { spawn, execFileSync } from "node:child_process";
+import { mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
 
 export const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
 let failures = 0;
-export function Fail(line) { console.log(`FAIL: ${line}`); ++failures; }
+export function Fail(line) {
+  console.log(`FAIL: ${line}`);
+  ++failures;
+}
 export const Failures = () => failures;
 
 // Chromium, and one page of it, spoken to through --remote-debugging-pipe: the
@@ -18,32 +21,60 @@ export const Failures = () => failures;
 // message JSON ended by a NUL byte (no WebSocket, so any Node.js from 18 on will do).
 export class Browser {
   static async Open(site) {
-    const profile = mkdtempSync(join(tmpdir(), 'cgfs-site-'));
-    const binary = ['chromium', 'chromium-browser'].find((name) => {
-      try { execFileSync('sh', ['-c', `command -v ${name}`]); return true; } catch { return false; }
+    const profile = mkdtempSync(join(tmpdir(), "cgfs-site-"));
+    const binary = ["chromium", "chromium-browser"].find((name) => {
+      try {
+        execFileSync("sh", ["-c", `command -v ${name}`]);
+        return true;
+      } catch {
+        return false;
+      }
     });
     if (!binary) {
-      console.log('check_site: no Chromium to load the pages in: install the Debian package chromium');
+      console.log(
+        "check_site: no Chromium to load the pages in: install the Debian package chromium",
+      );
       globalThis.process.exit(2);
     }
-    const process = spawn(binary, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
-      '--window-size=1400,1000', '--remote-debugging-pipe', `--user-data-dir=${profile}`, 'about:blank'],
-    {stdio: ['ignore', 'ignore', 'ignore', 'pipe', 'pipe']});
+    const process = spawn(
+      binary,
+      [
+        "--headless",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--hide-scrollbars",
+        "--window-size=1400,1000",
+        "--remote-debugging-pipe",
+        `--user-data-dir=${profile}`,
+        "about:blank",
+      ],
+      { stdio: ["ignore", "ignore", "ignore", "pipe", "pipe"] },
+    );
     const browser = new Browser(process, profile, site);
-    const {targetId} = await browser.Send('Target.createTarget', {url: 'about:blank'});
-    browser.session = (await browser.Send('Target.attachToTarget', {targetId, flatten: true})).sessionId;
-    await browser.Send('Page.enable');
+    const { targetId } = await browser.Send("Target.createTarget", { url: "about:blank" });
+    browser.session = (
+      await browser.Send("Target.attachToTarget", { targetId, flatten: true })
+    ).sessionId;
+    await browser.Send("Page.enable");
     await browser.HearRequests(browser.session);
     return browser;
   }
 
   constructor(process, profile, site) {
-    Object.assign(this, {process, profile, site, next: 1, waiting: new Map(), session: undefined, outside: []});
-    let unread = '';
-    process.stdio[3].on('error', () => {});  // once the browser has quit
-    process.stdio[4].setEncoding('utf8');
-    process.stdio[4].on('data', (chunk) => {
-      const messages = (unread + chunk).split('\0');
+    Object.assign(this, {
+      process,
+      profile,
+      site,
+      next: 1,
+      waiting: new Map(),
+      session: undefined,
+      outside: [],
+    });
+    let unread = "";
+    process.stdio[3].on("error", () => {}); // once the browser has quit
+    process.stdio[4].setEncoding("utf8");
+    process.stdio[4].on("data", (chunk) => {
+      const messages = (unread + chunk).split("\0");
       unread = messages.pop();
       for (const text of messages) this.Answer(JSON.parse(text));
     });
@@ -52,18 +83,28 @@ export class Browser {
   // Every request of a session (the page's, and each of its workers'), heard; the
   // workers' sessions are attached to as they start.
   async HearRequests(session) {
-    await this.Send('Network.enable', {}, session);
-    await this.Send('Target.setAutoAttach', {autoAttach: true, waitForDebuggerOnStart: true, flatten: true}, session);
+    await this.Send("Network.enable", {}, session);
+    await this.Send(
+      "Target.setAutoAttach",
+      { autoAttach: true, waitForDebuggerOnStart: true, flatten: true },
+      session,
+    );
   }
 
   Event(message) {
-    if (message.method === 'Network.requestWillBeSent') {
+    if (message.method === "Network.requestWillBeSent") {
       const url = message.params.request.url;
-      if (!/^(file|blob|data|about|chrome|devtools):|^https?:\/\/(127\.0\.0\.1|localhost)[:/]/.test(url)) this.outside.push(url);
-    } else if (message.method === 'Target.attachedToTarget') {
+      if (
+        !/^(file|blob|data|about|chrome|devtools):|^https?:\/\/(127\.0\.0\.1|localhost)[:/]/.test(
+          url,
+        )
+      )
+        this.outside.push(url);
+    } else if (message.method === "Target.attachedToTarget") {
       const session = message.params.sessionId;
-      this.HearRequests(session).catch(() => {}).finally(() =>
-        this.Send('Runtime.runIfWaitingForDebugger', {}, session).catch(() => {}));
+      this.HearRequests(session)
+        .catch(() => {})
+        .finally(() => this.Send("Runtime.runIfWaitingForDebugger", {}, session).catch(() => {}));
     }
   }
 
@@ -75,21 +116,27 @@ export class Browser {
     const waiter = this.waiting.get(message.id);
     if (waiter) {
       this.waiting.delete(message.id);
-      message.error ? waiter.reject(new Error(message.error.message)) : waiter.resolve(message.result);
+      message.error
+        ? waiter.reject(new Error(message.error.message))
+        : waiter.resolve(message.result);
     }
   }
 
   Send(method, params = {}, session = this.session) {
     const id = this.next++;
-    this.process.stdio[3].write(JSON.stringify({id, method, params, sessionId: session}) + '\0');
-    return new Promise((resolve, reject) => this.waiting.set(id, {resolve, reject}));
+    this.process.stdio[3].write(JSON.stringify({ id, method, params, sessionId: session }) + "\0");
+    return new Promise((resolve, reject) => this.waiting.set(id, { resolve, reject }));
   }
 
   // The value of a JavaScript expression in the page (awaited when it is a promise).
   async Evaluate(expression) {
-    const {result, exceptionDetails} = await this.Send('Runtime.evaluate',
-        {expression, awaitPromise: true, returnByValue: true});
-    if (exceptionDetails) throw new Error(`${expression}: ${exceptionDetails.exception?.description}`);
+    const { result, exceptionDetails } = await this.Send("Runtime.evaluate", {
+      expression,
+      awaitPromise: true,
+      returnByValue: true,
+    });
+    if (exceptionDetails)
+      throw new Error(`${expression}: ${exceptionDetails.exception?.description}`);
     return result.value;
   }
 
@@ -115,48 +162,68 @@ export class Browser {
 
   async Open(page) {
     const url = `file://${this.site}/${page}`;
-    await this.Send('Page.navigate', {url});
+    await this.Send("Page.navigate", { url });
     // The page keeps the figure shown in its address: compared without the query.
-    const bare = url.replace(/[?#].*$/, '');
-    return this.WaitFor(`location.href.replace(/[?#].*$/, '') === ${JSON.stringify(bare)} && document.readyState === 'complete' && ` +
-                        "(document.getElementById('live')?.dataset.ready === 'yes' || " +
-                        "!document.getElementById('status')?.textContent.startsWith('Loading'))", `${page} loads`);
+    const bare = url.replace(/[?#].*$/, "");
+    return this.WaitFor(
+      `location.href.replace(/[?#].*$/, '') === ${JSON.stringify(bare)} && document.readyState === 'complete' && ` +
+        "(document.getElementById('live')?.dataset.ready === 'yes' || " +
+        "!document.getElementById('status')?.textContent.startsWith('Loading'))",
+      `${page} loads`,
+    );
   }
 
   async Key(key) {
-    const named = {ArrowUp: 38, ArrowDown: 40, ArrowLeft: 37, ArrowRight: 39, PageUp: 33, PageDown: 34,
-      Home: 36, End: 35};
+    const named = {
+      ArrowUp: 38,
+      ArrowDown: 40,
+      ArrowLeft: 37,
+      ArrowRight: 39,
+      PageUp: 33,
+      PageDown: 34,
+      Home: 36,
+      End: 35,
+    };
     const code = named[key] ?? key.toUpperCase().charCodeAt(0);
-    const common = {key, windowsVirtualKeyCode: code, code: named[key] ? key : `Key${key.toUpperCase()}`};
-    await this.Send('Input.dispatchKeyEvent', {type: 'keyDown', ...common, text: named[key] ? undefined : key});
-    await this.Send('Input.dispatchKeyEvent', {type: 'keyUp', ...common});
+    const common = {
+      key,
+      windowsVirtualKeyCode: code,
+      code: named[key] ? key : `Key${key.toUpperCase()}`,
+    };
+    await this.Send("Input.dispatchKeyEvent", {
+      type: "keyDown",
+      ...common,
+      text: named[key] ? undefined : key,
+    });
+    await this.Send("Input.dispatchKeyEvent", { type: "keyUp", ...common });
   }
 
   // Chooses files in the page's file input `selector`, as a reader does in the browser's
   // file picker (its change event follows).
   async ChooseFiles(selector, paths) {
-    const {result} = await this.Send('Runtime.evaluate', {expression: `document.querySelector(${JSON.stringify(selector)})`});
-    await this.Send('DOM.setFileInputFiles', {files: paths, objectId: result.objectId});
+    const { result } = await this.Send("Runtime.evaluate", {
+      expression: `document.querySelector(${JSON.stringify(selector)})`,
+    });
+    await this.Send("DOM.setFileInputFiles", { files: paths, objectId: result.objectId });
   }
 
   async Drag(fromX, fromY, right, down) {
     const mouse = (type, x, y, buttons) =>
-      this.Send('Input.dispatchMouseEvent', {type, x, y, button: 'left', buttons, clickCount: 1});
-    await mouse('mousePressed', fromX, fromY, 1);
+      this.Send("Input.dispatchMouseEvent", { type, x, y, button: "left", buttons, clickCount: 1 });
+    await mouse("mousePressed", fromX, fromY, 1);
     for (let step = 1; step <= 4; ++step) {
-      await mouse('mouseMoved', fromX + right * step / 4, fromY + down * step / 4, 1);
+      await mouse("mouseMoved", fromX + (right * step) / 4, fromY + (down * step) / 4, 1);
     }
-    await mouse('mouseReleased', fromX + right, fromY + down, 0);
+    await mouse("mouseReleased", fromX + right, fromY + down, 0);
   }
 
   // Asks Chromium to quit, and removes its profile once its last process has left it.
   async Close() {
-    const exited = new Promise((done) => this.process.once('exit', done));
+    const exited = new Promise((done) => this.process.once("exit", done));
     this.session = undefined;
-    this.Send('Browser.close').catch(() => {});
+    this.Send("Browser.close").catch(() => {});
     await Promise.race([exited, sleep(10000)]);
     this.process.kill();
-    rmSync(this.profile, {recursive: true, force: true, maxRetries: 50, retryDelay: 100});
+    rmSync(this.profile, { recursive: true, force: true, maxRetries: 50, retryDelay: 100 });
   }
 }
-

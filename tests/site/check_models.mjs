@@ -14,30 +14,42 @@
 //    equal what the native programs draw.
 // Usage: node check_models.mjs REPO SITE NATIVE_BUILD
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
-import {spawnSync} from 'node:child_process';
-import {copyFileSync, existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync} from 'node:fs';
-import {tmpdir} from 'node:os';
-import {join, resolve} from 'node:path';
-import {Browser, Fail, Failures} from './browser.mjs';
-import {PngDigest} from './png.mjs';
+import { spawnSync } from "node:child_process";
+import {
+  copyFileSync,
+  existsSync,
+  mkdirSync,
+  mkdtempSync,
+  readdirSync,
+  rmSync,
+  writeFileSync,
+} from "node:fs";
+import { tmpdir } from "node:os";
+import { join, resolve } from "node:path";
+import { Browser, Fail, Failures } from "./browser.mjs";
+import { PngDigest } from "./png.mjs";
 
 const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
-const house = join(repo, 'tests', 'models');
-const assimp = '/usr/share/assimp/models/OBJ';
-const work = mkdtempSync(join(tmpdir(), 'cgfs-site-models-'));
+const house = join(repo, "tests", "models");
+const assimp = "/usr/share/assimp/models/OBJ";
+const work = mkdtempSync(join(tmpdir(), "cgfs-site-models-"));
 
 const kDrawn = "document.getElementById('canvas').dataset.drawn === 'full'";
-const kSaid = "document.getElementById('model-said').hidden ? '' : document.getElementById('model-said').textContent";
-const kFigureNames = "Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)";
+const kSaid =
+  "document.getElementById('model-said').hidden ? '' : document.getElementById('model-said').textContent";
+const kFigureNames =
+  "Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)";
 
 const Same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
 
 // The native program's images of the model (in a folder of their own, by figure name),
 // and what it printed on its standard error.
 function Native(chapter, model, more = []) {
-  const out = mkdtempSync(join(work, 'native-'));
-  const run = spawnSync(join(native, chapter), ['--model', model, '--output', out, ...more], {encoding: 'utf8'});
-  return {out, status: run.status, stderr: run.stderr.trimEnd()};
+  const out = mkdtempSync(join(work, "native-"));
+  const run = spawnSync(join(native, chapter), ["--model", model, "--output", out, ...more], {
+    encoding: "utf8",
+  });
+  return { out, status: run.status, stderr: run.stderr.trimEnd() };
 }
 
 async function ShowFigure(browser, index) {
@@ -49,8 +61,12 @@ async function ShowFigure(browser, index) {
 // Every figure the page lists now equals the native program's image of the same name.
 async function CompareFigures(browser, chapter, images, what) {
   const names = await browser.Evaluate(kFigureNames);
-  const expected = readdirSync(images).filter((f) => f.endsWith('.png')).map((f) => f.slice(0, -4)).sort();
-  if (!Same([...names].sort(), expected)) Fail(`${chapter} ${what}: the page lists ${names}, the program draws ${expected}`);
+  const expected = readdirSync(images)
+    .filter((f) => f.endsWith(".png"))
+    .map((f) => f.slice(0, -4))
+    .sort();
+  if (!Same([...names].sort(), expected))
+    Fail(`${chapter} ${what}: the page lists ${names}, the program draws ${expected}`);
   for (const [index, name] of names.entries()) {
     await ShowFigure(browser, index);
     if (!Same(await browser.CanvasDigest(), PngDigest(join(images, `${name}.png`)))) {
@@ -63,10 +79,11 @@ async function CompareFigures(browser, chapter, images, what) {
 async function CheckSiteHouse(browser, chapter) {
   await browser.Open(`${chapter}/index.html?model=house`);
   await browser.WaitFor(kDrawn, `${chapter}: the house drawn`);
-  const drawnNatively = Native(chapter, join(house, 'house.obj'));
-  const compared = await CompareFigures(browser, chapter, drawnNatively.out, 'the site\'s house');
-  const address = await browser.Evaluate('location.search');
-  if (!address.startsWith('?model=house&figure=')) Fail(`${chapter}: the address is ${address}, without the model`);
+  const drawnNatively = Native(chapter, join(house, "house.obj"));
+  const compared = await CompareFigures(browser, chapter, drawnNatively.out, "the site's house");
+  const address = await browser.Evaluate("location.search");
+  if (!address.startsWith("?model=house&figure="))
+    Fail(`${chapter}: the address is ${address}, without the model`);
   console.log(`${chapter}: the site's house, ${compared} figures, as the program draws them`);
 }
 
@@ -76,9 +93,12 @@ async function CheckPicker(browser, chapter) {
   await browser.WaitFor(kDrawn, `${chapter}: the first figure`);
   const own = (await browser.Evaluate(kFigureNames))[0];
   const kOwnFirst = `document.querySelector('#figure-lists button')?.textContent === ${JSON.stringify(own)}`;
-  await browser.ChooseFiles('#model-files', ['house.obj', 'house.mtl', 'house-bricks.ppm'].map((f) => join(house, f)));
+  await browser.ChooseFiles(
+    "#model-files",
+    ["house.obj", "house.mtl", "house-bricks.ppm"].map((f) => join(house, f)),
+  );
   await browser.WaitFor(`${kDrawn} && !(${kOwnFirst})`, `${chapter}: the chosen house drawn`);
-  const drawnNatively = Native(chapter, join(house, 'house.obj'));
+  const drawnNatively = Native(chapter, join(house, "house.obj"));
   // The worker ended and made anew, as when a figure is asked for while another is drawn:
   // the new one is given the model too.
   await browser.Evaluate(`(() => { figuresWorker.Restart(); delete document.getElementById('canvas').dataset.drawn;
@@ -89,53 +109,83 @@ async function CheckPicker(browser, chapter) {
     Fail(`${chapter}: the chosen house's ${first} differs from the native program's`);
   }
 
-  const bad = join(work, 'index-zero.obj');
-  writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n');
+  const bad = join(work, "index-zero.obj");
+  writeFileSync(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
   const refused = Native(chapter, bad);
-  await browser.ChooseFiles('#model-files', [bad]);
+  await browser.ChooseFiles("#model-files", [bad]);
   await browser.WaitFor(`(${kSaid}).includes('error')`, `${chapter}: the refusal said`, 20);
   const said = await browser.Evaluate(kSaid);
-  if (refused.status !== 2 || said !== refused.stderr.replaceAll(bad, 'index-zero.obj')) {
-    Fail(`${chapter}: for index-zero.obj the page says "${said}", the program (exit ${refused.status}) "${refused.stderr}"`);
+  if (refused.status !== 2 || said !== refused.stderr.replaceAll(bad, "index-zero.obj")) {
+    Fail(
+      `${chapter}: for index-zero.obj the page says "${said}", the program (exit ${refused.status}) "${refused.stderr}"`,
+    );
   }
-  if ((await browser.Evaluate(kFigureNames))[0] !== first) Fail(`${chapter}: a refused file changed the figures`);
+  if ((await browser.Evaluate(kFigureNames))[0] !== first)
+    Fail(`${chapter}: a refused file changed the figures`);
   // The list still names the model drawn, and the line is in view (it is below the picture).
-  const listed = await browser.Evaluate("document.getElementById('model-choice').selectedOptions[0].textContent");
-  if (listed !== 'your own: house.obj') Fail(`${chapter}: after a refused file the list says "${listed}", not the house still drawn`);
+  const listed = await browser.Evaluate(
+    "document.getElementById('model-choice').selectedOptions[0].textContent",
+  );
+  if (listed !== "your own: house.obj")
+    Fail(`${chapter}: after a refused file the list says "${listed}", not the house still drawn`);
   // (within a pixel: layout places it in fractions of one)
-  const inView = await browser.Evaluate(`(({top, bottom}) => top >= 0 && bottom <= innerHeight + 1)` +
-                                        `(document.getElementById('model-said').getBoundingClientRect())`);
+  const inView = await browser.Evaluate(
+    `(({top, bottom}) => top >= 0 && bottom <= innerHeight + 1)` +
+      `(document.getElementById('model-said').getBoundingClientRect())`,
+  );
   if (!inView) Fail(`${chapter}: the refusal's line is out of view`);
 
-  const alone = join(work, 'alone');
-  rmSync(alone, {recursive: true, force: true});
-  mkdirSync(alone, {recursive: true});
-  copyFileSync(join(house, 'house.obj'), join(alone, 'house.obj'));
-  const warned = spawnSync(join(native, chapter), ['--model', 'house.obj', '--figure', 'model', '--output', join(work, 'alone-out')],
-                           {cwd: alone, encoding: 'utf8'});
-  await browser.ChooseFiles('#model-files', [join(alone, 'house.obj')]);
-  await browser.WaitFor(`(${kSaid}).includes('warning') && ${kDrawn}`, `${chapter}: the .obj alone drawn`, 20);
+  const alone = join(work, "alone");
+  rmSync(alone, { recursive: true, force: true });
+  mkdirSync(alone, { recursive: true });
+  copyFileSync(join(house, "house.obj"), join(alone, "house.obj"));
+  const warned = spawnSync(
+    join(native, chapter),
+    ["--model", "house.obj", "--figure", "model", "--output", join(work, "alone-out")],
+    { cwd: alone, encoding: "utf8" },
+  );
+  await browser.ChooseFiles("#model-files", [join(alone, "house.obj")]);
+  await browser.WaitFor(
+    `(${kSaid}).includes('warning') && ${kDrawn}`,
+    `${chapter}: the .obj alone drawn`,
+    20,
+  );
   const warnings = await browser.Evaluate(kSaid);
-  if (warnings !== warned.stderr.trimEnd()) Fail(`${chapter}: for house.obj alone the page says "${warnings}", the program "${warned.stderr.trimEnd()}"`);
+  if (warnings !== warned.stderr.trimEnd())
+    Fail(
+      `${chapter}: for house.obj alone the page says "${warnings}", the program "${warned.stderr.trimEnd()}"`,
+    );
 
   await browser.Evaluate(`(() => { const select = document.getElementById('model-choice'); select.value = '';
     select.dispatchEvent(new Event('change')); })()`);
   await browser.WaitFor(`${kDrawn} && ${kOwnFirst}`, `${chapter}: the chapter's figures again`);
   await ShowFigure(browser, 0);
-  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${own}.png`)))) {
+  if (
+    !Same(
+      await browser.CanvasDigest(),
+      PngDigest(join(repo, "tests", "golden", chapter, `${own}.png`)),
+    )
+  ) {
     Fail(`${chapter}: back to none, ${own} differs from its golden image`);
   }
-  console.log(`${chapter}: the picker's house as the program draws it, after a restart too; ` +
-              `"${said}"; the .obj alone warned as the program warns; none: the chapter's ${own} again`);
+  console.log(
+    `${chapter}: the picker's house as the program draws it, after a restart too; ` +
+      `"${said}"; the .obj alone warned as the program warns; none: the chapter's ${own} again`,
+  );
 }
 
 // An assimp model from a moved camera, as in the deep tier's corpus check.
 async function CheckAssimp(browser, chapter, name) {
-  const view = '2.2,0.5,1.2,51,-10';
+  const view = "2.2,0.5,1.2,51,-10";
   await browser.Open(`${chapter}/index.html?model=${name}&figure=model&view=${view}`);
   await browser.WaitFor(kDrawn, `${chapter}: ${name} drawn`, 120);
-  const drawnNatively = Native(chapter, join(assimp, `${name}.obj`), ['--figure', 'model', '--view', view]);
-  if (!Same(await browser.CanvasDigest(), PngDigest(join(drawnNatively.out, 'model.png')))) {
+  const drawnNatively = Native(chapter, join(assimp, `${name}.obj`), [
+    "--figure",
+    "model",
+    "--view",
+    view,
+  ]);
+  if (!Same(await browser.CanvasDigest(), PngDigest(join(drawnNatively.out, "model.png")))) {
     Fail(`${chapter}: ${name} from ${view} differs from the native program's`);
   } else {
     console.log(`${chapter}: ${name} from ${view}, as the program draws it`);
@@ -144,23 +194,36 @@ async function CheckAssimp(browser, chapter, name) {
 
 const browser = await Browser.Open(site);
 try {
-  const chapters = readdirSync(join(repo, 'chapters')).filter((c) => /^\d\d-/.test(c)).sort()
-    .filter((c) => existsSync(join(site, c, 'index.html')) && existsSync(join(repo, 'chapters', c, 'options.cpp')))
-    .filter((c) => spawnSync(join(native, c), ['--help'], {encoding: 'utf8'}).stdout.includes('--model'));
+  const chapters = readdirSync(join(repo, "chapters"))
+    .filter((c) => /^\d\d-/.test(c))
+    .sort()
+    .filter(
+      (c) =>
+        existsSync(join(site, c, "index.html")) &&
+        existsSync(join(repo, "chapters", c, "options.cpp")),
+    )
+    .filter((c) =>
+      spawnSync(join(native, c), ["--help"], { encoding: "utf8" }).stdout.includes("--model"),
+    );
   if (chapters.length < 8) Fail(`only ${chapters.length} chapters take --model: ${chapters}`);
   for (const chapter of chapters) await CheckSiteHouse(browser, chapter);
-  await CheckPicker(browser, '14-textures');
-  await CheckPicker(browser, '05-raytracer-extensions');
-  if (existsSync(join(assimp, 'spider.obj'))) {
-    await CheckAssimp(browser, '14-textures', 'spider');
-    await CheckAssimp(browser, '05-raytracer-extensions', 'WusonOBJ');
+  await CheckPicker(browser, "14-textures");
+  await CheckPicker(browser, "05-raytracer-extensions");
+  if (existsSync(join(assimp, "spider.obj"))) {
+    await CheckAssimp(browser, "14-textures", "spider");
+    await CheckAssimp(browser, "05-raytracer-extensions", "WusonOBJ");
   } else {
-    console.log(`no ${assimp}: the spider and the Wuson not checked (scripts/setup --deep installs them)`);
+    console.log(
+      `no ${assimp}: the spider and the Wuson not checked (scripts/setup --deep installs them)`,
+    );
   }
 } finally {
   await browser.Close();
-  rmSync(work, {recursive: true, force: true});
+  rmSync(work, { recursive: true, force: true });
 }
-if (browser.outside.length) Fail(`the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(', ')}`);
-console.log(Failures() === 0 ? 'PASS: the models of the site' : `${Failures()} failed`);
+if (browser.outside.length)
+  Fail(
+    `the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(", ")}`,
+  );
+console.log(Failures() === 0 ? "PASS: the models of the site" : `${Failures()} failed`);
 process.exit(Failures() === 0 ? 0 : 1);

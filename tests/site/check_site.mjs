@@ -20,37 +20,43 @@
 // Usage: node check_site.mjs REPO SITE NATIVE_BUILD
 //            [--speed CHAPTER:FIGURE ... | --screenshot PAGE WIDTHxHEIGHT FILE]
 // Exit status 0 when all passed, 1 when one failed (each failure is one line).
-import {execFileSync} from 'node:child_process';
-import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
-import {tmpdir} from 'node:os';
-import {join, dirname, resolve} from 'node:path';
-import {Browser, Fail, Failures, sleep} from './browser.mjs';
-import {PngDigest} from './png.mjs';
+import { execFileSync } from "node:child_process";
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, dirname, resolve } from "node:path";
+import { Browser, Fail, Failures, sleep } from "./browser.mjs";
+import { PngDigest } from "./png.mjs";
 
 const [repo, site, native] = process.argv.slice(2, 5).map((p) => resolve(p));
-const speedIndex = process.argv.indexOf('--speed');
-
-
+const speedIndex = process.argv.indexOf("--speed");
 
 const Same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
-const Chapters = () => readdirSync(join(repo, 'chapters')).filter((name) => /^\d\d-/.test(name)).sort();
+const Chapters = () =>
+  readdirSync(join(repo, "chapters"))
+    .filter((name) => /^\d\d-/.test(name))
+    .sort();
 
 // Clicks figure `index`'s button and waits for its full frame.
 async function ShowFigure(browser, index) {
   await browser.Evaluate(`(() => { const canvas = document.getElementById('canvas');
     delete canvas.dataset.drawn; document.querySelectorAll('#figure-lists button')[${index}].click(); })()`);
-  return browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `figure ${index} drawn`);
+  return browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `figure ${index} drawn`,
+  );
 }
 
 async function CheckEveryFigure(browser) {
   let compared = 0;
   for (const chapter of Chapters()) {
-    if (!await browser.Open(`${chapter}/index.html`)) continue;
-    const names = await browser.Evaluate("Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)");
+    if (!(await browser.Open(`${chapter}/index.html`))) continue;
+    const names = await browser.Evaluate(
+      "Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent)",
+    );
     for (const [index, name] of names.entries()) {
       await ShowFigure(browser, index);
       const problem = await browser.Evaluate("document.getElementById('problem').textContent");
-      const golden = join(repo, 'tests', 'golden', chapter, `${name}.png`);
+      const golden = join(repo, "tests", "golden", chapter, `${name}.png`);
       if (problem) Fail(`${chapter}/${name}: the page says "${problem}"`);
       else if (!Same(await browser.CanvasDigest(), PngDigest(golden))) {
         Fail(`${chapter}/${name}: the canvas differs from ${golden}`);
@@ -58,26 +64,53 @@ async function CheckEveryFigure(browser) {
       ++compared;
     }
   }
-  console.log(`every figure, drawn through the page's buttons, compared with its golden image: ${compared}`);
+  console.log(
+    `every figure, drawn through the page's buttons, compared with its golden image: ${compared}`,
+  );
 }
 
 // The C key, and the button beside the caption, switch between a figure and its cost view.
 async function CheckCostKey(browser, chapter, figure, costView) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`);
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: ${figure}`,
+  );
   const button = await browser.Evaluate("document.getElementById('cost').textContent");
-  if (button !== `where the work goes: ${costView} (C)`) Fail(`${chapter}: ${figure}'s cost button says '${button}'`);
-  await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.body.focus(); })()");
-  await browser.Key('c');
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: C`);
-  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${costView}.png`)))) {
+  if (button !== `where the work goes: ${costView} (C)`)
+    Fail(`${chapter}: ${figure}'s cost button says '${button}'`);
+  await browser.Evaluate(
+    "(() => { delete document.getElementById('canvas').dataset.drawn; document.body.focus(); })()",
+  );
+  await browser.Key("c");
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: C`,
+  );
+  if (
+    !Same(
+      await browser.CanvasDigest(),
+      PngDigest(join(repo, "tests", "golden", chapter, `${costView}.png`)),
+    )
+  ) {
     Fail(`${chapter}: C on ${figure} did not show ${costView}`);
   }
   const back = await browser.Evaluate("document.getElementById('cost').textContent");
-  if (back !== `back to ${figure} (C)`) Fail(`${chapter}: ${costView}'s cost button says '${back}'`);
-  await browser.Evaluate("(() => { delete document.getElementById('canvas').dataset.drawn; document.getElementById('cost').click(); })()");
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the cost button`);
-  if (!Same(await browser.CanvasDigest(), PngDigest(join(repo, 'tests', 'golden', chapter, `${figure}.png`)))) {
+  if (back !== `back to ${figure} (C)`)
+    Fail(`${chapter}: ${costView}'s cost button says '${back}'`);
+  await browser.Evaluate(
+    "(() => { delete document.getElementById('canvas').dataset.drawn; document.getElementById('cost').click(); })()",
+  );
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: the cost button`,
+  );
+  if (
+    !Same(
+      await browser.CanvasDigest(),
+      PngDigest(join(repo, "tests", "golden", chapter, `${figure}.png`)),
+    )
+  ) {
     Fail(`${chapter}: the cost button on ${costView} did not go back to ${figure}`);
   }
   console.log(`${chapter}: C showed ${costView}, its button ${figure} again`);
@@ -87,16 +120,23 @@ async function CheckCostKey(browser, chapter, figure, costView) {
 // with what the figure measured ("3 600 360 000 in all, at most 10 001").
 async function CheckLargeCount(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`);
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: ${figure}`,
+  );
   const status = await browser.Evaluate("document.getElementById('status').textContent");
-  const out = mkdtempSync(join(tmpdir(), 'cgfs-count-'));
-  const wrote = execFileSync(join(native, chapter), ['--figure', figure, '--output', out], {encoding: 'utf8'});
-  rmSync(out, {recursive: true});
-  const measured = wrote.trim().split(': ').pop();
-  if (!status.endsWith(`; ${measured}`)) Fail(`${chapter}: ${figure} says '${status}', the program '${measured}'`);
+  const out = mkdtempSync(join(tmpdir(), "cgfs-count-"));
+  const wrote = execFileSync(join(native, chapter), ["--figure", figure, "--output", out], {
+    encoding: "utf8",
+  });
+  rmSync(out, { recursive: true });
+  const measured = wrote.trim().split(": ").pop();
+  if (!status.endsWith(`; ${measured}`))
+    Fail(`${chapter}: ${figure} says '${status}', the program '${measured}'`);
   else console.log(`${chapter}: ${figure} counts as the program does: ${measured}`);
   // The lists say how many figures they hold (they show three rows, and scroll).
-  const [count, figures, views] = await browser.Evaluate(`[document.getElementById('figures-count').textContent,
+  const [count, figures, views] =
+    await browser.Evaluate(`[document.getElementById('figures-count').textContent,
     document.querySelectorAll('#figures button').length, document.querySelectorAll('#cost-views button').length]`);
   const listed = `${figures} figures and ${views} views of where the work goes: the list scrolls`;
   if (count !== listed) Fail(`${chapter}: the lists say '${count}', not '${listed}'`);
@@ -106,77 +146,107 @@ async function CheckCamera(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
   // The page's first frame is drawn after it loads: waited for, or it could land after
   // the keys below and be taken for a frame of the moving camera.
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the first frame`);
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: the first frame`,
+  );
   await browser.Evaluate("document.body.focus()");
   // Every frame drawn from here on, in order (a frame's mark can be cleared by the next
   // draw before it is read: the first is kept, however fast they come).
   await browser.Evaluate(`(() => { const canvas = document.getElementById('canvas'); delete canvas.dataset.drawn;
     window.__frames = []; new MutationObserver(() => { if (canvas.dataset.drawn) window.__frames.push(canvas.dataset.drawn); })
       .observe(canvas, {attributes: true, attributeFilter: ['data-drawn']}); })()`);
-  for (const key of ['ArrowUp', 'ArrowUp', 'q']) await browser.Key(key);
+  for (const key of ["ArrowUp", "ArrowUp", "q"]) await browser.Key(key);
   // The frames come from the page's worker: the first after the keys, at half size.
   await browser.WaitFor("window.__frames.length > 0", `${chapter}: a frame after the keys`, 10);
   const drawn = await browser.Evaluate("window.__frames[0]");
-  if (drawn !== 'preview') Fail(`${chapter}: the frame while the camera moves is drawn '${drawn}', not at half size`);
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the settled frame after the keys`);
+  if (drawn !== "preview")
+    Fail(`${chapter}: the frame while the camera moves is drawn '${drawn}', not at half size`);
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: the settled frame after the keys`,
+  );
   const walked = await browser.Evaluate("document.getElementById('view').textContent");
   // Forward a quarter unit twice, turned 5 degrees left once (program/camera_controls.h).
-  if (walked !== '0,0,0.5,5,0') Fail(`${chapter}: after Up, Up, Q the page shows the view ${walked}, not 0,0,0.5,5,0`);
-  const box = await browser.Evaluate("(({x, y, width, height}) => [x, y, width, height])" +
-                                     "(document.getElementById('canvas').getBoundingClientRect())");
+  if (walked !== "0,0,0.5,5,0")
+    Fail(`${chapter}: after Up, Up, Q the page shows the view ${walked}, not 0,0,0.5,5,0`);
+  const box = await browser.Evaluate(
+    "(({x, y, width, height}) => [x, y, width, height])" +
+      "(document.getElementById('canvas').getBoundingClientRect())",
+  );
   await browser.Drag(box[0] + box[2] / 2, box[1] + box[3] / 2, 40, -24);
   await sleep(400);
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: the settled frame`);
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: the settled frame`,
+  );
   const view = await browser.Evaluate("document.getElementById('view').textContent");
   if (view === walked) Fail(`${chapter}: dragging the picture did not turn the camera`);
-  const out = mkdtempSync(join(tmpdir(), 'cgfs-view-'));
-  execFileSync(join(native, chapter), ['--figure', figure, '--view', view, '--output', out], {stdio: 'ignore'});
+  const out = mkdtempSync(join(tmpdir(), "cgfs-view-"));
+  execFileSync(join(native, chapter), ["--figure", figure, "--view", view, "--output", out], {
+    stdio: "ignore",
+  });
   const same = Same(await browser.CanvasDigest(), PngDigest(join(out, `${figure}.png`)));
-  rmSync(out, {recursive: true});
-  if (!same) Fail(`${chapter}: the page's frame at view ${view} differs from ${chapter} --view ${view}`);
+  rmSync(out, { recursive: true });
+  if (!same)
+    Fail(`${chapter}: the page's frame at view ${view} differs from ${chapter} --view ${view}`);
   const link = await browser.Evaluate("document.getElementById('view-link').getAttribute('href')");
-  if (link !== `?figure=${figure}&view=${encodeURIComponent(view)}`) Fail(`${chapter}: the view's link is ${link}`);
-  console.log(`${chapter}: keys and a drag walked ${figure} to ${view}; the native program draws the same frame`);
+  if (link !== `?figure=${figure}&view=${encodeURIComponent(view)}`)
+    Fail(`${chapter}: the view's link is ${link}`);
+  console.log(
+    `${chapter}: keys and a drag walked ${figure} to ${view}; the native program draws the same frame`,
+  );
 }
 
 async function CheckBadAddresses(browser) {
   const cases = [
-    ['02-basic-rays/index.html?figure=fig-9-99', 'This chapter has no figure "fig-9-99"'],
-    ['05-raytracer-extensions/index.html?figure=fig-5-1-camera&view=1,2', 'No view "1,2"'],
-    ['02-basic-rays/index.html?figure=fig-2-11&view=0,0,1,0,0', 'fig-2-11 has no camera to move'],
+    ["02-basic-rays/index.html?figure=fig-9-99", 'This chapter has no figure "fig-9-99"'],
+    ["05-raytracer-extensions/index.html?figure=fig-5-1-camera&view=1,2", 'No view "1,2"'],
+    ["02-basic-rays/index.html?figure=fig-2-11&view=0,0,1,0,0", "fig-2-11 has no camera to move"],
   ];
   for (const [page, said] of cases) {
     await browser.Open(page);
-    await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${page} draws`);
-    const problem = await browser.Evaluate("document.getElementById('problem').hidden ? '' : " +
-                                           "document.getElementById('problem').textContent");
+    await browser.WaitFor(
+      "document.getElementById('canvas').dataset.drawn === 'full'",
+      `${page} draws`,
+    );
+    const problem = await browser.Evaluate(
+      "document.getElementById('problem').hidden ? '' : " +
+        "document.getElementById('problem').textContent",
+    );
     if (!problem.startsWith(said)) Fail(`${page}: the page says "${problem}", not "${said}…"`);
     else console.log(`${page}: "${problem}"`);
   }
 }
 
 async function CheckIndex(browser) {
-  await browser.Open('index.html');
-  await browser.WaitFor("document.body.dataset.thumbnails === 'drawn'", 'the index draws its pictures', 120);
-  const blank = await browser.Evaluate(`Array.from(document.querySelectorAll('canvas.thumbnail')).filter((c) => {
+  await browser.Open("index.html");
+  await browser.WaitFor(
+    "document.body.dataset.thumbnails === 'drawn'",
+    "the index draws its pictures",
+    120,
+  );
+  const blank =
+    await browser.Evaluate(`Array.from(document.querySelectorAll('canvas.thumbnail')).filter((c) => {
     const p = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     return p.every((v, i) => v === p[i % 4]); }).map((c) => c.dataset.chapter)`);
   const count = await browser.Evaluate("document.querySelectorAll('canvas.thumbnail').length");
-  if (count !== Chapters().length) Fail(`the index has ${count} pictures for ${Chapters().length} chapters`);
-  if (blank.length) Fail(`the index's pictures of ${blank.join(', ')} are blank`);
+  if (count !== Chapters().length)
+    Fail(`the index has ${count} pictures for ${Chapters().length} chapters`);
+  if (blank.length) Fail(`the index's pictures of ${blank.join(", ")} are blank`);
   console.log(`the index drew ${count} pictures`);
 }
 
 // Every href and src of every page of the site leads to a file of the site.
 function CheckLinks() {
   let links = 0;
-  const pages = readdirSync(site, {recursive: true}).filter((path) => path.endsWith('.html'));
+  const pages = readdirSync(site, { recursive: true }).filter((path) => path.endsWith(".html"));
   for (const page of pages) {
-    const text = readFileSync(join(site, page), 'utf8');
+    const text = readFileSync(join(site, page), "utf8");
     for (const [, target] of text.matchAll(/(?:href|src)="([^"#?]+)[^"]*"/g)) {
       if (/^[a-z]+:/.test(target)) continue;
       ++links;
-      if (!existsSync(join(dirname(join(site, page)), target.replaceAll('&amp;', '&')))) {
+      if (!existsSync(join(dirname(join(site, page)), target.replaceAll("&amp;", "&")))) {
         Fail(`${page} links to ${target}, which the site does not have`);
       }
     }
@@ -189,61 +259,100 @@ function CheckLinks() {
 // 5 runs on one thread (the time the program prints).
 async function Speed(browser, chapter, figure) {
   await browser.Open(`${chapter}/index.html?figure=${figure}`);
-  await browser.WaitFor("document.getElementById('canvas').dataset.drawn === 'full'", `${chapter}: ${figure}`, 120);
-  const first = Number(await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds"));
+  await browser.WaitFor(
+    "document.getElementById('canvas').dataset.drawn === 'full'",
+    `${chapter}: ${figure}`,
+    120,
+  );
+  const first = Number(
+    await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds"),
+  );
   const index = await browser.Evaluate(
-      `Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent).indexOf('${figure}')`);
+    `Array.from(document.querySelectorAll('#figure-lists button'), (b) => b.textContent).indexOf('${figure}')`,
+  );
   const page = [];
   for (let i = 0; i < 15; ++i) {
     await ShowFigure(browser, index);
-    page.push(Number(await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds")));
+    page.push(
+      Number(await browser.Evaluate("document.getElementById('canvas').dataset.milliseconds")),
+    );
   }
-  const threads = ['05', '16', '17'].includes(chapter.slice(0, 2)) ? ['--threads', '1'] : [];
+  const threads = ["05", "16", "17"].includes(chapter.slice(0, 2)) ? ["--threads", "1"] : [];
   const runs = [];
   for (let i = 0; i < 5; ++i) {
-    const out = mkdtempSync(join(tmpdir(), 'cgfs-speed-'));
-    const printed = execFileSync(join(native, chapter), ['--figure', figure, '--output', out, ...threads]).toString();
-    rmSync(out, {recursive: true});
+    const out = mkdtempSync(join(tmpdir(), "cgfs-speed-"));
+    const printed = execFileSync(join(native, chapter), [
+      "--figure",
+      figure,
+      "--output",
+      out,
+      ...threads,
+    ]).toString();
+    rmSync(out, { recursive: true });
     runs.push(Number(/rendered in ([\d.]+) ms/.exec(printed)[1]));
   }
   const [inPage, natively] = [Math.min(...page), Math.min(...runs)];
-  const ms = (value) => `${value < 10 ? value.toFixed(1) : Math.round(value).toLocaleString('en').replaceAll(',', ' ')} ms`;
-  console.log(`| ${chapter.slice(0, 2)} | \`${figure}\` | ${ms(natively)} | ${ms(first)} | ${ms(inPage)} | ` +
-              `${(inPage / natively).toFixed(2)} |`);
+  const ms = (value) =>
+    `${value < 10 ? value.toFixed(1) : Math.round(value).toLocaleString("en").replaceAll(",", " ")} ms`;
+  console.log(
+    `| ${chapter.slice(0, 2)} | \`${figure}\` | ${ms(natively)} | ${ms(first)} | ${ms(inPage)} | ` +
+      `${(inPage / natively).toFixed(2)} |`,
+  );
 }
 
 // A picture of a page (its address relative to the site) once its figures are drawn.
 async function Screenshot(browser, page, size, file) {
-  const [width, height] = size.split('x').map(Number);
-  await browser.Send('Emulation.setDeviceMetricsOverride', {width, height, deviceScaleFactor: 1, mobile: false});
+  const [width, height] = size.split("x").map(Number);
+  await browser.Send("Emulation.setDeviceMetricsOverride", {
+    width,
+    height,
+    deviceScaleFactor: 1,
+    mobile: false,
+  });
   await browser.Open(page);
-  await browser.WaitFor("document.getElementById('canvas')?.dataset.drawn === 'full' || " +
-                        "document.body.dataset.thumbnails === 'drawn'", `${page} drawn`, 120);
-  const {data} = await browser.Send('Page.captureScreenshot', {format: 'png'});
-  writeFileSync(file, Buffer.from(data, 'base64'));
+  await browser.WaitFor(
+    "document.getElementById('canvas')?.dataset.drawn === 'full' || " +
+      "document.body.dataset.thumbnails === 'drawn'",
+    `${page} drawn`,
+    120,
+  );
+  const { data } = await browser.Send("Page.captureScreenshot", { format: "png" });
+  writeFileSync(file, Buffer.from(data, "base64"));
   console.log(`wrote ${file}`);
 }
 
 const browser = await Browser.Open(site);
-const screenshotIndex = process.argv.indexOf('--screenshot');
+const screenshotIndex = process.argv.indexOf("--screenshot");
 try {
   if (screenshotIndex > 0) {
     await Screenshot(browser, ...process.argv.slice(screenshotIndex + 1, screenshotIndex + 4));
   } else if (speedIndex > 0) {
-    for (const item of process.argv.slice(speedIndex + 1)) await Speed(browser, ...item.split(':'));
+    for (const item of process.argv.slice(speedIndex + 1)) await Speed(browser, ...item.split(":"));
   } else {
     CheckLinks();
     await CheckBadAddresses(browser);
-    await CheckCamera(browser, '05-raytracer-extensions', 'fig-5-1-camera');
-    await CheckCostKey(browser, '05-raytracer-extensions', 'subsampling-thin-wires', 'subsampling-thin-wires-searches');
-    await CheckLargeCount(browser, '05-raytracer-extensions', 'sphere-field-10000-tests-without-hierarchy');
-    await CheckCamera(browser, '15-rasterizer-extensions', 'everything');
+    await CheckCamera(browser, "05-raytracer-extensions", "fig-5-1-camera");
+    await CheckCostKey(
+      browser,
+      "05-raytracer-extensions",
+      "subsampling-thin-wires",
+      "subsampling-thin-wires-searches",
+    );
+    await CheckLargeCount(
+      browser,
+      "05-raytracer-extensions",
+      "sphere-field-10000-tests-without-hierarchy",
+    );
+    await CheckCamera(browser, "15-rasterizer-extensions", "everything");
     await CheckIndex(browser);
     await CheckEveryFigure(browser);
   }
 } finally {
   await browser.Close();
 }
-if (browser.outside.length) Fail(`the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(', ')}`);
-console.log(Failures() === 0 ? 'PASS: the site' : `${Failures()} failed`);
+if (browser.outside.length)
+  Fail(
+    `the pages asked for what is not on this machine: ${[...new Set(browser.outside)].join(", ")}`,
+  );
+console.log(Failures() === 0 ? "PASS: the site" : `${Failures()} failed`);
 process.exit(Failures() === 0 ? 0 : 1);

@@ -32,9 +32,7 @@ def main():
         os.chdir(folder)
         sys.argv = [os.path.basename(path)]
         module = runner.load(path, "your code")
-        loaded = runner.Chapter(
-            module, folder, runner.adapted(None, module), names, list(kinds)
-        )
+        loaded = runner.Chapter(module, folder, runner.adapted(None, module), names, list(kinds))
         start = time.perf_counter()
         runner.draw_figure(recipe, loaded, kinds, preview=lambda pixels: None)
         print(f"{time.perf_counter() - start:.3f}")

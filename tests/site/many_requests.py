@@ -9,7 +9,9 @@ import urllib.request
 def main(url, count):
     expected = urllib.request.urlopen(url, timeout=30).read()
     with concurrent.futures.ThreadPoolExecutor(count) as pool:
-        pages = list(pool.map(lambda _: urllib.request.urlopen(url, timeout=60).read(), range(count)))
+        pages = list(
+            pool.map(lambda _: urllib.request.urlopen(url, timeout=60).read(), range(count))
+        )
     same = sum(page == expected for page in pages)
     print(f"{count} requests at once: {same} had the page")
     return 0 if same == count else 1

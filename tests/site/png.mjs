@@ -1,9 +1,9 @@
 // Reads a PNG file as the project writes them (8 bits, RGB or RGBA, not interlaced)
 // into RGBA bytes, as a canvas's ImageData holds them: enough to compare a page's
 // canvas with a golden image (tests/site/check_site.mjs) without a package.
-import {createHash} from 'node:crypto';
-import {readFileSync, writeFileSync} from 'node:fs';
-import {deflateSync, inflateSync} from 'node:zlib';
+import { createHash } from "node:crypto";
+import { readFileSync, writeFileSync } from "node:fs";
+import { deflateSync, inflateSync } from "node:zlib";
 
 // PNG's Paeth predictor: of the left, upper and upper-left bytes, the one nearest
 // to left + upper - upper-left.
@@ -17,25 +17,27 @@ function Paeth(left, up, upLeft) {
 // (browser.mjs) gives a page's canvas.
 export function PngDigest(path) {
   const image = ReadPng(path);
-  return [image.width, image.height, createHash('sha256').update(image.rgba).digest('hex')];
+  return [image.width, image.height, createHash("sha256").update(image.rgba).digest("hex")];
 }
 
 export function ReadPng(path) {
   const file = readFileSync(path);
-  let width = 0, height = 0, channels = 0;
+  let width = 0,
+    height = 0,
+    channels = 0;
   const compressed = [];
   for (let at = 8; at < file.length;) {
     const length = file.readUInt32BE(at);
-    const type = file.toString('latin1', at + 4, at + 8);
+    const type = file.toString("latin1", at + 4, at + 8);
     const body = file.subarray(at + 8, at + 8 + length);
-    if (type === 'IHDR') {
+    if (type === "IHDR") {
       [width, height] = [body.readUInt32BE(0), body.readUInt32BE(4)];
       const [depth, colour, interlace] = [body[8], body[9], body[12]];
       if (depth !== 8 || interlace !== 0 || (colour !== 2 && colour !== 6)) {
         throw new Error(`${path}: not an 8-bit RGB or RGBA PNG without interlacing`);
       }
       channels = colour === 2 ? 3 : 4;
-    } else if (type === 'IDAT') {
+    } else if (type === "IDAT") {
       compressed.push(body);
     }
     at += 12 + length;
@@ -60,7 +62,7 @@ export function ReadPng(path) {
     }
     above = row;
   }
-  return {width, height, rgba};
+  return { width, height, rgba };
 }
 
 // CRC-32 of PNG's chunks (ISO 3309), a byte at a time.
@@ -79,7 +81,7 @@ export function WritePng(path, width, height, rgba) {
   const chunk = (type, body) => {
     const head = Buffer.alloc(8);
     head.writeUInt32BE(body.length, 0);
-    head.write(type, 4, 'latin1');
+    head.write(type, 4, "latin1");
     const crc = Buffer.alloc(4);
     crc.writeUInt32BE(Crc32(Buffer.concat([head.subarray(4), body])), 0);
     return Buffer.concat([head, body, crc]);
@@ -89,7 +91,15 @@ export function WritePng(path, width, height, rgba) {
   header.writeUInt32BE(height, 4);
   header.set([8, 6, 0, 0, 0], 8);
   const rows = Buffer.alloc(height * (width * 4 + 1));
-  for (let y = 0; y < height; ++y) rows.set(rgba.subarray(y * width * 4, (y + 1) * width * 4), y * (width * 4 + 1) + 1);
-  writeFileSync(path, Buffer.concat([Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]),
-    chunk('IHDR', header), chunk('IDAT', deflateSync(rows)), chunk('IEND', Buffer.alloc(0))]));
+  for (let y = 0; y < height; ++y)
+    rows.set(rgba.subarray(y * width * 4, (y + 1) * width * 4), y * (width * 4 + 1) + 1);
+  writeFileSync(
+    path,
+    Buffer.concat([
+      Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]),
+      chunk("IHDR", header),
+      chunk("IDAT", deflateSync(rows)),
+      chunk("IEND", Buffer.alloc(0)),
+    ]),
+  );
 }

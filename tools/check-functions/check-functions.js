@@ -27,10 +27,11 @@ const { definedFunctions } = require("./source_facts.js");
 
 const ROOT = path.resolve(__dirname, "..", "..");
 const CASES_DIR = path.join(ROOT, "tests", "cases");
-const GRACE = 2;  // seconds past a case's limit before its process is ended from outside
-const MAX_LINE = 5 << 20;  // characters of one answer
+const GRACE = 2; // seconds past a case's limit before its process is ended from outside
+const MAX_LINE = 5 << 20; // characters of one answer
 
-const USAGE = "usage: check-functions.js CHAPTER YOUR_FILE [--function NAME [--case N]] [--json FILE] [--adapter FILE] [--time-limit SECONDS]\n" +
+const USAGE =
+  "usage: check-functions.js CHAPTER YOUR_FILE [--function NAME [--case N]] [--json FILE] [--adapter FILE] [--time-limit SECONDS]\n" +
   "       check-functions.js --adapter-template [CHAPTER YOUR_FILE | python | js]";
 const EXIT = { complete: 0, incomplete: 1, partial: 3 };
 
@@ -39,14 +40,17 @@ class Usage extends Error {}
 function languageOf(file) {
   if (/\.py$/i.test(file)) return "python";
   if (/\.(js|cjs|mjs|html?)$/i.test(file)) return "javascript";
-  throw new Usage(`${file}: give a Python file (.py) or JavaScript (.js, .cjs, .mjs, or a page, .html)`);
+  throw new Usage(
+    `${file}: give a Python file (.py) or JavaScript (.js, .cjs, .mjs, or a page, .html)`,
+  );
 }
 
 function parse(argv) {
   const options = {};
   const positional = [];
   const value = (i) => {
-    if (i >= argv.length || argv[i].startsWith("--")) throw new Usage(`${argv[i - 1]} needs a value (${USAGE.split("\n")[0]})`);
+    if (i >= argv.length || argv[i].startsWith("--"))
+      throw new Usage(`${argv[i - 1]} needs a value (${USAGE.split("\n")[0]})`);
     return argv[i];
   };
   for (let i = 0; i < argv.length; ++i) {
@@ -57,7 +61,8 @@ function parse(argv) {
     else if (argv[i] === "--json") options.json = argv[++i] === "-" ? "-" : value(i);
     else if (argv[i] === "--adapter-template") options.template = true;
     else if (argv[i] === "--help" || argv[i] === "-h") options.help = true;
-    else if (argv[i].startsWith("-") && argv[i] !== "-") throw new Usage(`unknown option ${argv[i]} (${USAGE.split("\n")[0]})`);
+    else if (argv[i].startsWith("-") && argv[i] !== "-")
+      throw new Usage(`unknown option ${argv[i]} (${USAGE.split("\n")[0]})`);
     else positional.push(argv[i]);
   }
   if (options.help) return options;
@@ -66,24 +71,33 @@ function parse(argv) {
       options.templateLanguage = positional[0] === "python" ? "python" : "javascript";
       return options;
     }
-    if (positional.length !== 0 && positional.length !== 2) throw new Usage(`--adapter-template takes a chapter and your file, or python or js (${USAGE.split("\n")[1].trim()})`);
+    if (positional.length !== 0 && positional.length !== 2)
+      throw new Usage(
+        `--adapter-template takes a chapter and your file, or python or js (${USAGE.split("\n")[1].trim()})`,
+      );
   } else if (positional.length !== 2) {
     throw new Usage(`give a chapter and your file (${USAGE.split("\n")[0]})`);
   }
   [options.chapter, options.module] = positional;
-  if (options.timeLimit !== undefined && !(options.timeLimit > 0 && options.timeLimit <= 3600)) throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
-  if (options.case !== undefined && options.function === undefined) throw new Usage("--case needs --function NAME: the function whose case it is");
+  if (options.timeLimit !== undefined && !(options.timeLimit > 0 && options.timeLimit <= 3600))
+    throw new Usage("--time-limit: give more than 0 and at most 3600 seconds");
+  if (options.case !== undefined && options.function === undefined)
+    throw new Usage("--case needs --function NAME: the function whose case it is");
   if (options.case !== undefined && !/^([0-9]{2}:)?[1-9][0-9]{0,3}$/.test(options.case)) {
-    throw new Usage(`--case ${options.case}: give a case's number (4), or an earlier chapter's and its number (02:4)`);
+    throw new Usage(
+      `--case ${options.case}: give a case's number (4), or an earlier chapter's and its number (02:4)`,
+    );
   }
-  if (options.function !== undefined && !/^[A-Za-z_][A-Za-z0-9_]{0,63}$/.test(options.function)) throw new Usage(`--function ${options.function}: give a book function's name`);
+  if (options.function !== undefined && !/^[A-Za-z_][A-Za-z0-9_]{0,63}$/.test(options.function))
+    throw new Usage(`--function ${options.function}: give a book function's name`);
   if (options.json !== undefined && options.json !== "-") {
     const target = path.resolve(options.json);
     let stat = null;
     try {
       stat = fs.statSync(target);
     } catch {
-      if (!fs.existsSync(path.dirname(target))) throw new Usage(`--json ${options.json}: no folder ${path.dirname(target)}`);
+      if (!fs.existsSync(path.dirname(target)))
+        throw new Usage(`--json ${options.json}: no folder ${path.dirname(target)}`);
     }
     if (stat && !stat.isFile()) throw new Usage(`--json ${options.json}: not a file`);
     const same = (file) => {
@@ -94,8 +108,13 @@ function parse(argv) {
         return false;
       }
     };
-    if ([options.module, options.adapter].filter(Boolean).some(same) || /\.(py|js|cjs|mjs|html?)$/i.test(target)) {
-      throw new Usage(`--json ${options.json}: that is code, not a results file; give another name (results.json)`);
+    if (
+      [options.module, options.adapter].filter(Boolean).some(same) ||
+      /\.(py|js|cjs|mjs|html?)$/i.test(target)
+    ) {
+      throw new Usage(
+        `--json ${options.json}: that is code, not a results file; give another name (results.json)`,
+      );
     }
   }
   for (const file of [options.module, options.adapter]) {
@@ -115,11 +134,16 @@ function parse(argv) {
   if (options.module) options.module = sandbox.real(options.module);
   if (options.adapter) options.adapter = sandbox.real(options.adapter);
   if (options.adapter && languageOf(options.adapter) !== options.language) {
-    throw new Usage(`${options.adapter}: an adapter is in your chapter's language (${options.language})`);
+    throw new Usage(
+      `${options.adapter}: an adapter is in your chapter's language (${options.language})`,
+    );
   }
   // The sandbox gives the code its own folder: the root folder would be the whole system.
   for (const file of [options.module, options.adapter].filter(Boolean)) {
-    if (path.dirname(file) === "/") throw new Usage(`${file}: put your chapter in a folder of its own (its folder, /, would give your code the whole file system)`);
+    if (path.dirname(file) === "/")
+      throw new Usage(
+        `${file}: put your chapter in a folder of its own (its folder, /, would give your code the whole file system)`,
+      );
   }
   return options;
 }
@@ -127,8 +151,13 @@ function parse(argv) {
 // Where Debian (or npm) keeps acorn, which the JavaScript runner parses chapters with.
 function nodePath() {
   const candidates = ["/usr/share/nodejs", "/usr/lib/nodejs", ...require.resolve.paths("acorn")];
-  const found = candidates.filter((dir) => fs.existsSync(path.join(dir, "acorn-globals", "index.js")));
-  if (found.length === 0) throw new Usage("a JavaScript chapter needs acorn and acorn-globals: on Debian, sudo apt install node-acorn");
+  const found = candidates.filter((dir) =>
+    fs.existsSync(path.join(dir, "acorn-globals", "index.js")),
+  );
+  if (found.length === 0)
+    throw new Usage(
+      "a JavaScript chapter needs acorn and acorn-globals: on Debian, sudo apt install node-acorn",
+    );
   return found.join(path.delimiter);
 }
 
@@ -137,17 +166,35 @@ function command(options, seconds) {
   let run;
   if (options.language === "python") {
     const python = sandbox.pythonInterpreter();
-    if (!python) throw new Usage("a Python chapter needs python3 (Debian: sudo apt install python3)");
-    run = { file: python.executable, args: ["-B", path.join(__dirname, "runners", "python_runner.py")],
-      env: { PYTHONDONTWRITEBYTECODE: "1" } };
+    if (!python)
+      throw new Usage("a Python chapter needs python3 (Debian: sudo apt install python3)");
+    run = {
+      file: python.executable,
+      args: ["-B", path.join(__dirname, "runners", "python_runner.py")],
+      env: { PYTHONDONTWRITEBYTECODE: "1" },
+    };
   } else {
-    run = { file: process.execPath, args: ["--max-old-space-size=2048", "--stack-size=4000",
-      path.join(__dirname, "runners", "js_runner.mjs")], env: { NODE_PATH: nodePath() } };
+    run = {
+      file: process.execPath,
+      args: [
+        "--max-old-space-size=2048",
+        "--stack-size=4000",
+        path.join(__dirname, "runners", "js_runner.mjs"),
+      ],
+      env: { NODE_PATH: nodePath() },
+    };
   }
   if (sandbox.why()) return run;
-  const folders = [...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(file)))];
+  const folders = [
+    ...new Set([options.module, options.adapter].filter(Boolean).map((file) => path.dirname(file))),
+  ];
   const modulePaths = options.language === "python" ? [] : run.env.NODE_PATH.split(path.delimiter);
-  const sandboxedRun = sandbox.sandboxed(run, { language: options.language, folders, seconds, modulePaths });
+  const sandboxedRun = sandbox.sandboxed(run, {
+    language: options.language,
+    folders,
+    seconds,
+    modulePaths,
+  });
   if (sandboxedRun.refused) throw new Usage(sandboxedRun.refused);
   return sandboxedRun;
 }
@@ -159,21 +206,28 @@ class ProcessRunner {
   constructor(options, totalCases) {
     Object.assign(this, { options, language: options.language, process: null, id: 0 });
     this.started = Date.now();
-    this.sandboxes = new Set();  // the first process of every sandbox started (its PID outside)
+    this.sandboxes = new Set(); // the first process of every sandbox started (its PID outside)
     this.bound = (totalCases * options.timeLimit + options.loadLimit) * 1000;
     this.totalCases = totalCases;
   }
 
   start() {
-    const { file, args, env, argsText, cut } = command(this.options, this.bound / 1000 + this.options.loadLimit);
+    const { file, args, env, argsText, cut } = command(
+      this.options,
+      this.bound / 1000 + this.options.loadLimit,
+    );
     this.searchCut ||= Boolean(cut);
     // In the sandbox, an empty environment, bwrap's arguments through a pipe (fd 5), and
     // the sandbox's first process said on fd 6.
     const sandboxPipes = argsText === undefined ? [] : ["pipe", "pipe"];
     const child = spawn(file, args, {
-      cwd: path.dirname(this.options.module), detached: true,
+      cwd: path.dirname(this.options.module),
+      detached: true,
       stdio: ["ignore", "ignore", "ignore", "pipe", "pipe", ...sandboxPipes],
-      env: argsText === undefined ? { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env } : env,
+      env:
+        argsText === undefined
+          ? { PATH: process.env.PATH, HOME: process.env.HOME ?? "/", LANG: "C.UTF-8", ...env }
+          : env,
     });
     this.process = { child, buffer: "", lines: [], waiting: null, ended: null };
     if (argsText !== undefined) {
@@ -188,7 +242,11 @@ class ProcessRunner {
       });
     }
     const state = this.process;
-    const wake = () => { const w = state.waiting; state.waiting = null; if (w) w(); };
+    const wake = () => {
+      const w = state.waiting;
+      state.waiting = null;
+      if (w) w();
+    };
     child.stdio[4].setEncoding("utf8");
     child.stdio[4].on("data", (chunk) => {
       state.buffer += chunk;
@@ -197,12 +255,21 @@ class ProcessRunner {
         state.lines.push(state.buffer.slice(0, at));
         state.buffer = state.buffer.slice(at + 1);
       }
-      if (state.buffer.length > MAX_LINE) { state.lines.push(null); state.buffer = ""; }
+      if (state.buffer.length > MAX_LINE) {
+        state.lines.push(null);
+        state.buffer = "";
+      }
       wake();
     });
     child.stdio[3].on("error", () => {});
-    child.on("error", (error) => { state.ended ??= `error ${error.message}`; wake(); });
-    child.on("exit", (status, signal) => { state.ended ??= signal ? `signal ${signal}` : `status ${status}`; wake(); });
+    child.on("error", (error) => {
+      state.ended ??= `error ${error.message}`;
+      wake();
+    });
+    child.on("exit", (status, signal) => {
+      state.ended ??= signal ? `signal ${signal}` : `status ${status}`;
+      wake();
+    });
     child.stdio[4].on("end", wake);
   }
 
@@ -215,7 +282,10 @@ class ProcessRunner {
       if (left <= 0) return { timeout: true };
       await new Promise((resolve) => {
         const timer = setTimeout(resolve, left);
-        state.waiting = () => { clearTimeout(timer); resolve(); };
+        state.waiting = () => {
+          clearTimeout(timer);
+          resolve();
+        };
       });
     }
     if (state.lines.length === 0) return { ended: state.ended };
@@ -262,30 +332,52 @@ class ProcessRunner {
       }
     };
     for (const pid of this.sandboxes) {
-      while (running(pid) && Date.now() < deadline) await new Promise((resolve) => setTimeout(resolve, 10));
+      while (running(pid) && Date.now() < deadline)
+        await new Promise((resolve) => setTimeout(resolve, 10));
     }
     await sandbox.removeCgroup();
   }
 
   async load(functions, names) {
-    this.loadRequest = { load: { module: this.options.module, adapter: this.options.adapter, functions, names } };
+    this.loadRequest = {
+      load: { module: this.options.module, adapter: this.options.adapter, functions, names },
+    };
     this.start();
     this.send(this.loadRequest);
     const message = await this.next(this.options.loadLimit);
     const { CheckError } = await import("./core/report.mjs");
-    const fail = (text) => { this.stop(); throw new CheckError(text); };
-    if (message.timeout) fail(`your module ${this.options.shownModule} does not load: still running after ${this.options.loadLimit} s`);
-    if (message.ended) fail(`your module ${this.options.shownModule} does not load: it ended the process (exit ${message.ended}) while loading`);
-    if (typeof message.load_error === "string") fail(message.load_error.split("\n")[0].slice(0, 500));
+    const fail = (text) => {
+      this.stop();
+      throw new CheckError(text);
+    };
+    if (message.timeout)
+      fail(
+        `your module ${this.options.shownModule} does not load: still running after ${this.options.loadLimit} s`,
+      );
+    if (message.ended)
+      fail(
+        `your module ${this.options.shownModule} does not load: it ended the process (exit ${message.ended}) while loading`,
+      );
+    if (typeof message.load_error === "string")
+      fail(message.load_error.split("\n")[0].slice(0, 500));
     const facts = message.loaded;
-    if (!facts || typeof facts !== "object" || !facts.functions || typeof facts.functions !== "object" ||
-        !Array.isArray(facts.defined)) {
-      fail(`your module ${this.options.shownModule} does not load: it said something else while loading`);
+    if (
+      !facts ||
+      typeof facts !== "object" ||
+      !facts.functions ||
+      typeof facts.functions !== "object" ||
+      !Array.isArray(facts.defined)
+    ) {
+      fail(
+        `your module ${this.options.shownModule} does not load: it said something else while loading`,
+      );
     }
     // The process's account of the file, held against what the file says of itself.
     const { heldAgainstFile } = await import("./core/account.mjs");
     const defined = await definedFunctions(this.options.module, this.language, {
-      python: sandbox.pythonInterpreter()?.executable, nodePath: this.language === "python" ? "" : nodePath() });
+      python: sandbox.pythonInterpreter()?.executable,
+      nodePath: this.language === "python" ? "" : nodePath(),
+    });
     return heldAgainstFile(facts, defined, functions);
   }
 
@@ -300,7 +392,8 @@ class ProcessRunner {
         return { garbled: "a new process for this case could not load your module" };
       }
     }
-    const id = ++this.id, nonce = crypto.randomBytes(8).toString("hex");
+    const id = ++this.id,
+      nonce = crypto.randomBytes(8).toString("hex");
     const limit = this.options.timeLimit;
     this.send({ ...request, id, nonce, limit });
     const answer = await this.next(limit + GRACE);
@@ -315,7 +408,11 @@ class ProcessRunner {
   }
 
   stoppedLine() {
-    return this.stopped(Math.round((Date.now() - this.started) / 1000), this.totalCases, this.options);
+    return this.stopped(
+      Math.round((Date.now() - this.started) / 1000),
+      this.totalCases,
+      this.options,
+    );
   }
 }
 
@@ -323,7 +420,8 @@ class ProcessRunner {
 function shellWord(word) {
   const quoted = (text) => (/^[\w./:=+-]*$/.test(text) ? text : `'${text.replace(/'/g, "'\\''")}'`);
   const home = process.env.HOME;
-  if (home && home !== "/" && path.isAbsolute(word) && word.startsWith(`${home}/`)) return `~/${quoted(word.slice(home.length + 1))}`;
+  if (home && home !== "/" && path.isAbsolute(word) && word.startsWith(`${home}/`))
+    return `~/${quoted(word.slice(home.length + 1))}`;
   return quoted(word);
 }
 
@@ -334,7 +432,10 @@ function writeResults(target, text) {
     process.stdout.write(text);
     return;
   }
-  const temporary = path.join(path.dirname(path.resolve(target)), `.${path.basename(target)}.${process.pid}.tmp`);
+  const temporary = path.join(
+    path.dirname(path.resolve(target)),
+    `.${path.basename(target)}.${process.pid}.tmp`,
+  );
   try {
     fs.writeFileSync(temporary, text, { flag: "wx", mode: 0o644 });
     fs.renameSync(temporary, target);
@@ -346,8 +447,13 @@ function writeResults(target, text) {
 
 function caseFiles() {
   const files = {};
-  for (const name of fs.readdirSync(CASES_DIR).filter((each) => each.endsWith(".json")).sort()) {
-    files[name.replace(/\.json$/, "")] = JSON.parse(fs.readFileSync(path.join(CASES_DIR, name), "utf8"));
+  for (const name of fs
+    .readdirSync(CASES_DIR)
+    .filter((each) => each.endsWith(".json"))
+    .sort()) {
+    files[name.replace(/\.json$/, "")] = JSON.parse(
+      fs.readFileSync(path.join(CASES_DIR, name), "utf8"),
+    );
   }
   return files;
 }
@@ -355,7 +461,9 @@ function caseFiles() {
 async function main(argv) {
   const options = parse(argv);
   if (options.help) {
-    process.stdout.write(`${USAGE}\n\nChecks your chapter's functions, one by one, against the cases of tests/cases/ (docs/students.md).\n`);
+    process.stdout.write(
+      `${USAGE}\n\nChecks your chapter's functions, one by one, against the cases of tests/cases/ (docs/students.md).\n`,
+    );
     return 0;
   }
   const { CASE_LIMIT, LOAD_LIMIT, chapterNamed, sections } = await import("./core/plan.mjs");
@@ -370,14 +478,19 @@ async function main(argv) {
   const files = caseFiles();
   const chapter = chapterNamed(options.chapter, Object.keys(files));
   if (!chapter) {
-    throw new Usage(`no chapter '${options.chapter}': give a number such as 02 or a folder name; there are cases for ${Object.keys(files).join(", ")}`);
+    throw new Usage(
+      `no chapter '${options.chapter}': give a number such as 02 or a folder name; there are cases for ${Object.keys(files).join(", ")}`,
+    );
   }
   if (options.function !== undefined) {
     const { functionsOf } = await import("./core/plan.mjs");
     const known = functionsOf(sections(chapter, files));
-    if (!known.includes(options.function)) throw new Usage(`--function ${options.function}: ${chapter} checks ${known.join(", ")}`);
+    if (!known.includes(options.function))
+      throw new Usage(`--function ${options.function}: ${chapter} checks ${known.join(", ")}`);
   }
-  const totalCases = sections(chapter, files).flatMap((s) => s.entries).reduce((n, e) => n + e.cases.length, 0);
+  const totalCases = sections(chapter, files)
+    .flatMap((s) => s.entries)
+    .reduce((n, e) => n + e.cases.length, 0);
   const runner = new ProcessRunner(options, totalCases);
   runner.stopped = stoppedLine;
   running = runner;
@@ -391,41 +504,80 @@ async function main(argv) {
     }
     const started = Date.now();
     const rerun = (name, caseFile, number) => {
-      const which = caseFile.startsWith(chapter) ? `${number}` : `${caseFile.slice(0, 2)}:${number}`;
+      const which = caseFile.startsWith(chapter)
+        ? `${number}`
+        : `${caseFile.slice(0, 2)}:${number}`;
       const relative = path.relative(process.cwd(), process.argv[1]);
-      const checker = relative.startsWith("..") || path.isAbsolute(relative) ? process.argv[1] : relative;
-      return `node ${shellWord(checker)} ${chapter.slice(0, 2)} ${shellWord(options.shownModule)}` +
-        `${options.adapter ? ` --adapter ${shellWord(options.adapter)}` : ""} --function ${name} --case ${which}`;
+      const checker =
+        relative.startsWith("..") || path.isAbsolute(relative) ? process.argv[1] : relative;
+      return (
+        `node ${shellWord(checker)} ${chapter.slice(0, 2)} ${shellWord(options.shownModule)}` +
+        `${options.adapter ? ` --adapter ${shellWord(options.adapter)}` : ""} --function ${name} --case ${which}`
+      );
     };
     const only = options.function ? { function: options.function, case: options.case } : null;
     let result;
     try {
-      result = await check({ chapter, files, runner, file: path.basename(options.module), adapterGiven: Boolean(options.adapter), only, rerun, repl: true });
+      result = await check({
+        chapter,
+        files,
+        runner,
+        file: path.basename(options.module),
+        adapterGiven: Boolean(options.adapter),
+        only,
+        rerun,
+        repl: true,
+      });
     } catch (error) {
       // A file that cannot be checked is a result too: no case ran, the one line is its output.
       if (options.json !== undefined && error?.constructor?.name === "CheckError") {
         const { gradescopeResults } = await import("./core/results.mjs");
-        writeResults(options.json, `${JSON.stringify(gradescopeResults({ records: [], verdict: "incomplete" }, {
-          chapter, file: path.basename(options.module), language: options.language, seconds: (Date.now() - started) / 1000,
-          report: `check-functions.js: ${error.message}`, notes: [] }), null, 2)}\n`);
+        writeResults(
+          options.json,
+          `${JSON.stringify(
+            gradescopeResults(
+              { records: [], verdict: "incomplete" },
+              {
+                chapter,
+                file: path.basename(options.module),
+                language: options.language,
+                seconds: (Date.now() - started) / 1000,
+                report: `check-functions.js: ${error.message}`,
+                notes: [],
+              },
+            ),
+            null,
+            2,
+          )}\n`,
+        );
       }
       throw error;
     }
     const { lines } = result;
     const unsandboxed = sandbox.why();
     if (runner.searchCut) {
-      lines.unshift("note: your folders hold more than 200 000 entries: the search for copies of the case files stopped there (docs/students.md, \"Where your code runs\")");
+      lines.unshift(
+        'note: your folders hold more than 200 000 entries: the search for copies of the case files stopped there (docs/students.md, "Where your code runs")',
+      );
     }
     if (unsandboxed) {
-      lines.unshift(`note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`);
+      lines.unshift(
+        `note: no sandbox, ${unsandboxed}: your code ran with your rights (docs/students.md, "Where your code runs")`,
+      );
     }
     const limitsNote = sandbox.limitsNote();
     if (limitsNote) lines.unshift(`note: ${limitsNote} (docs/students.md, "Where your code runs")`);
     if (options.json !== "-") process.stdout.write(`${lines.join("\n")}\n`);
     if (options.json !== undefined) {
       const { gradescopeResults } = await import("./core/results.mjs");
-      const results = gradescopeResults(result, { chapter, file: path.basename(options.module), language: options.language,
-        seconds: (Date.now() - started) / 1000, report: lines.join("\n"), notes: lines.filter((line) => line.startsWith("note: ")) });
+      const results = gradescopeResults(result, {
+        chapter,
+        file: path.basename(options.module),
+        language: options.language,
+        seconds: (Date.now() - started) / 1000,
+        report: lines.join("\n"),
+        notes: lines.filter((line) => line.startsWith("note: ")),
+      });
       writeResults(options.json, `${JSON.stringify(results, null, 2)}\n`);
     }
     return EXIT[result.verdict];
@@ -445,15 +597,20 @@ for (const signal of ["SIGINT", "SIGTERM", "SIGHUP"]) {
   });
 }
 
-main(process.argv.slice(2)).then((status) => { process.exitCode = status; }, (error) => {
-  if (error instanceof Usage) {
-    process.stderr.write(`check-functions.js: error: ${error.message}\n`);
-    process.exitCode = 2;
-  } else if (error?.constructor?.name === "CheckError") {
-    process.stderr.write(`check-functions.js: ${error.message}\n`);
-    process.exitCode = 1;
-  } else {
-    process.stderr.write(`check-functions.js: ${error?.stack ?? error}\n`);
-    process.exitCode = 2;
-  }
-});
+main(process.argv.slice(2)).then(
+  (status) => {
+    process.exitCode = status;
+  },
+  (error) => {
+    if (error instanceof Usage) {
+      process.stderr.write(`check-functions.js: error: ${error.message}\n`);
+      process.exitCode = 2;
+    } else if (error?.constructor?.name === "CheckError") {
+      process.stderr.write(`check-functions.js: ${error.message}\n`);
+      process.exitCode = 1;
+    } else {
+      process.stderr.write(`check-functions.js: ${error?.stack ?? error}\n`);
+      process.exitCode = 2;
+    }
+  },
+);

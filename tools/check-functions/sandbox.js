@@ -25,15 +25,15 @@ const path = require("path");
 const REPO = fs.realpathSync(path.resolve(__dirname, "..", ".."));
 const CASES = path.join(REPO, "tests", "cases");
 const RUNNERS = path.join(__dirname, "runners");
-const MEMORY = 3 * 2 ** 30;  // bytes the sandbox may hold (its cgroup; else each process's RLIMIT_DATA): a memory bomb ends in seconds
-const PROCESSES = 256;  // processes the sandbox may add to the user's, where there is no cgroup
-const TASKS = 128;  // processes and threads of the sandbox together, in its cgroup (Node starts about 12)
-const TMP_BYTES = 64 << 20;  // the private /tmp (the Python runner keeps each case's printing there)
-const SHM_BYTES = 16 << 20;  // the private /dev/shm
-const FILE_BYTES = 64 << 20;  // the largest file the code may write (RLIMIT_FSIZE)
-const NOBODY = "65534";  // run as root, the code runs as this user and group (Debian's nobody)
+const MEMORY = 3 * 2 ** 30; // bytes the sandbox may hold (its cgroup; else each process's RLIMIT_DATA): a memory bomb ends in seconds
+const PROCESSES = 256; // processes the sandbox may add to the user's, where there is no cgroup
+const TASKS = 128; // processes and threads of the sandbox together, in its cgroup (Node starts about 12)
+const TMP_BYTES = 64 << 20; // the private /tmp (the Python runner keeps each case's printing there)
+const SHM_BYTES = 16 << 20; // the private /dev/shm
+const FILE_BYTES = 64 << 20; // the largest file the code may write (RLIMIT_FSIZE)
+const NOBODY = "65534"; // run as root, the code runs as this user and group (Debian's nobody)
 const isRoot = () => process.getuid?.() === 0;
-const SCAN_LIMIT = 200000;  // entries of the bound folders searched for copies of the case files
+const SCAN_LIMIT = 200000; // entries of the bound folders searched for copies of the case files
 const SYSTEM = ["/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"];
 
 let checked = null;
@@ -42,10 +42,15 @@ let checked = null;
 function why() {
   if (process.env.CGFS_NO_SANDBOX === "1") return "CGFS_NO_SANDBOX=1 turned it off";
   if (checked !== null) return checked || null;
-  const probe = spawnSync("bwrap", ["--ro-bind", "/", "/", "--unshare-all", "--die-with-parent", "--new-session", "true"],
-    { stdio: "ignore", timeout: 10000 });
-  if (probe.error?.code === "ENOENT") checked = "bubblewrap is not installed (Debian: sudo apt install bubblewrap)";
-  else if (probe.status !== 0) checked = "bwrap cannot make a sandbox here (are user namespaces turned off?)";
+  const probe = spawnSync(
+    "bwrap",
+    ["--ro-bind", "/", "/", "--unshare-all", "--die-with-parent", "--new-session", "true"],
+    { stdio: "ignore", timeout: 10000 },
+  );
+  if (probe.error?.code === "ENOENT")
+    checked = "bubblewrap is not installed (Debian: sudo apt install bubblewrap)";
+  else if (probe.status !== 0)
+    checked = "bwrap cannot make a sandbox here (are user namespaces turned off?)";
   else checked = "";
   return checked || null;
 }
@@ -62,20 +67,32 @@ function writeTo(file, text) {
 }
 
 function makeCgroup() {
-  if (process.env.CGFS_NO_CGROUP === "1") return { folders: [], note: "CGFS_NO_CGROUP=1: the sandbox's memory and processes are capped for each process, not together" };
+  if (process.env.CGFS_NO_CGROUP === "1")
+    return {
+      folders: [],
+      note: "CGFS_NO_CGROUP=1: the sandbox's memory and processes are capped for each process, not together",
+    };
   const name = `cgfs-check-${process.pid}`;
-  const lines = fs.readFileSync("/proc/self/cgroup", "utf8").trim().split("\n").map((line) => line.split(":"));
+  const lines = fs
+    .readFileSync("/proc/self/cgroup", "utf8")
+    .trim()
+    .split("\n")
+    .map((line) => line.split(":"));
   const v1 = (controller) => lines.find(([, list]) => list.split(",").includes(controller))?.[2];
   const made = [];
   try {
     if (v1("memory") !== undefined && v1("pids") !== undefined) {
-      for (const [controller, file, value] of [["memory", "memory.limit_in_bytes", MEMORY], ["pids", "pids.max", TASKS]]) {
+      for (const [controller, file, value] of [
+        ["memory", "memory.limit_in_bytes", MEMORY],
+        ["pids", "pids.max", TASKS],
+      ]) {
         const folder = path.join("/sys/fs/cgroup", controller, v1(controller), name);
         fs.mkdirSync(folder);
         made.push(folder);
         writeTo(path.join(folder, file), `${value}`);
       }
-      try {  // no swap beyond the cap, where the kernel accounts for swap
+      try {
+        // no swap beyond the cap, where the kernel accounts for swap
         writeTo(path.join(made[0], "memory.memsw.limit_in_bytes"), `${MEMORY}`);
       } catch {
         // no swap accounting: the memory cap holds all the same
@@ -86,8 +103,11 @@ function makeCgroup() {
       const folder = path.join("/sys/fs/cgroup", own, name);
       fs.mkdirSync(folder);
       made.push(folder);
-      const controllers = fs.readFileSync(path.join(folder, "cgroup.controllers"), "utf8").split(/\s+/);
-      if (!controllers.includes("memory") || !controllers.includes("pids")) throw new Error("controllers not delegated");
+      const controllers = fs
+        .readFileSync(path.join(folder, "cgroup.controllers"), "utf8")
+        .split(/\s+/);
+      if (!controllers.includes("memory") || !controllers.includes("pids"))
+        throw new Error("controllers not delegated");
       writeTo(path.join(folder, "memory.max"), `${MEMORY}`);
       writeTo(path.join(folder, "pids.max"), `${TASKS}`);
       try {
@@ -105,7 +125,10 @@ function makeCgroup() {
         // left for the system
       }
     }
-    return { folders: [], note: "no cgroup can be made here: the sandbox's memory and processes are capped for each process, not together" };
+    return {
+      folders: [],
+      note: "no cgroup can be made here: the sandbox's memory and processes are capped for each process, not together",
+    };
   }
 }
 
@@ -119,7 +142,8 @@ function cgroupProcesses() {
   const pids = new Set();
   for (const folder of cgroup?.folders ?? []) {
     try {
-      for (const pid of fs.readFileSync(path.join(folder, "cgroup.procs"), "utf8").split(/\s+/)) if (pid) pids.add(Number(pid));
+      for (const pid of fs.readFileSync(path.join(folder, "cgroup.procs"), "utf8").split(/\s+/))
+        if (pid) pids.add(Number(pid));
     } catch {
       // gone
     }
@@ -183,15 +207,22 @@ const real = (file) => {
     return null;
   }
 };
-const inside = (child, parent) => child === parent || child.startsWith(parent === "/" ? "/" : parent + path.sep);
+const inside = (child, parent) =>
+  child === parent || child.startsWith(parent === "/" ? "/" : parent + path.sep);
 const system = (file) => SYSTEM.some((dir) => inside(file, dir));
 
 // The shared libraries a program loads from outside the system's folders (pyenv's
 // libpython), as ldd finds them.
 function ownLibraries(program) {
   try {
-    const text = execFileSync("ldd", [program], { encoding: "utf8", timeout: 10000, stdio: ["ignore", "pipe", "ignore"] });
-    return [...text.matchAll(/=> (\/\S+)/g)].map((match) => match[1]).filter((file) => !system(real(file) ?? file));
+    const text = execFileSync("ldd", [program], {
+      encoding: "utf8",
+      timeout: 10000,
+      stdio: ["ignore", "pipe", "ignore"],
+    });
+    return [...text.matchAll(/=> (\/\S+)/g)]
+      .map((match) => match[1])
+      .filter((file) => !system(real(file) ?? file));
   } catch {
     return [];
   }
@@ -206,17 +237,29 @@ let python = null;
 function pythonInterpreter() {
   if (python === null) {
     try {
-      const script = "import json, sys; print(json.dumps([sys.executable, sys.prefix, sys.base_prefix, [p for p in sys.path if p]]))";
-      const text = execFileSync("python3", ["-c", script],
-        { encoding: "utf8", timeout: 10000, stdio: ["ignore", "pipe", "ignore"], cwd: "/" });
+      const script =
+        "import json, sys; print(json.dumps([sys.executable, sys.prefix, sys.base_prefix, [p for p in sys.path if p]]))";
+      const text = execFileSync("python3", ["-c", script], {
+        encoding: "utf8",
+        timeout: 10000,
+        stdio: ["ignore", "pipe", "ignore"],
+        cwd: "/",
+      });
       const [executable, prefix, basePrefix, importPath] = JSON.parse(text);
-      const files = [executable, real(executable), path.join(prefix, "pyvenv.cfg"), ...importPath,
-        ...ownLibraries(real(executable) ?? executable)].filter((file) => file && fs.existsSync(file));
+      const files = [
+        executable,
+        real(executable),
+        path.join(prefix, "pyvenv.cfg"),
+        ...importPath,
+        ...ownLibraries(real(executable) ?? executable),
+      ].filter((file) => file && fs.existsSync(file));
       // Searched for copies of the case files: the folders of the import path that are
       // not the installation's own (a virtual environment's packages, the user's,
       // PYTHONPATH's).
       const base = real(basePrefix) ?? basePrefix;
-      const searched = importPath.map(real).filter((dir) => dir && !inside(dir, base) && fs.statSync(dir).isDirectory());
+      const searched = importPath
+        .map(real)
+        .filter((dir) => dir && !inside(dir, base) && fs.statSync(dir).isDirectory());
       python = { executable, files, searched };
     } catch {
       python = false;
@@ -237,7 +280,8 @@ function interpreterFiles(language, modulePaths) {
 // installation (the installation's own, tens of thousands of files, are not searched;
 // the repository is hidden from them all the same).
 function interpreterSearched(language, modulePaths) {
-  const searched = language === "python" ? pythonInterpreter()?.searched ?? [] : modulePaths.map(real);
+  const searched =
+    language === "python" ? (pythonInterpreter()?.searched ?? []) : modulePaths.map(real);
   return searched.filter((dir) => dir && !system(dir));
 }
 
@@ -273,7 +317,8 @@ function caseFileCopies(folders) {
       return;
     }
     const here = new Set(entries.map((entry) => entry.name));
-    const copy = (here.has("tests") && fs.existsSync(path.join(dir, "tests", "cases"))) ||
+    const copy =
+      (here.has("tests") && fs.existsSync(path.join(dir, "tests", "cases"))) ||
       (here.has("HEAD") && here.has("objects") && here.has("refs"));
     if (copy && !folders.includes(dir)) {
       hidden.folders.add(dir);
@@ -286,7 +331,8 @@ function caseFileCopies(folders) {
       }
       const file = path.join(dir, entry.name);
       if (entry.isDirectory()) {
-        if (entry.name === ".git" || (entry.name === "cases" && path.basename(dir) === "tests")) hidden.folders.add(file);
+        if (entry.name === ".git" || (entry.name === "cases" && path.basename(dir) === "tests"))
+          hidden.folders.add(file);
         else walk(file);
       } else if (entry.isFile()) {
         if (names.has(entry.name) || sameBytes(file)) hidden.files.add(file);
@@ -321,10 +367,13 @@ function hidingMounts(folders, searched) {
     if (folder !== REPO) args.push("--tmpfs", folder);
   }
   for (const file of copies.files) args.push("--ro-bind", "/dev/null", file);
-  if (folders.some((folder) => inside(CASES, folder) || inside(folder, CASES))) args.push("--tmpfs", CASES);
+  if (folders.some((folder) => inside(CASES, folder) || inside(folder, CASES)))
+    args.push("--tmpfs", CASES);
   // The hiding folders stay empty (a tmpfs the code could fill has no size): made
   // read-only once every mount is made (the runners' may be inside one).
-  const readOnly = args.flatMap((word, at) => (word === "--tmpfs" ? ["--remount-ro", args[at + 1]] : []));
+  const readOnly = args.flatMap((word, at) =>
+    word === "--tmpfs" ? ["--remount-ro", args[at + 1]] : [],
+  );
   return { args, readOnly, cut: copies.cut };
 }
 
@@ -340,7 +389,13 @@ function systemMounts() {
     if (stat.isSymbolicLink()) args.push("--symlink", fs.readlinkSync(dir), dir);
     else if (stat.isDirectory()) args.push("--ro-bind", dir, dir);
   }
-  for (const file of ["/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives", "/etc/localtime"]) {
+  for (const file of [
+    "/etc/ld.so.cache",
+    "/etc/ld.so.conf",
+    "/etc/ld.so.conf.d",
+    "/etc/alternatives",
+    "/etc/localtime",
+  ]) {
     if (fs.existsSync(file)) args.push("--ro-bind", file, file);
   }
   return args;
@@ -351,13 +406,16 @@ function systemMounts() {
 function userProcesses() {
   try {
     const uid = process.getuid();
-    return fs.readdirSync("/proc").filter((name) => /^\d+$/.test(name)).filter((name) => {
-      try {
-        return fs.statSync(`/proc/${name}`).uid === uid;
-      } catch {
-        return false;
-      }
-    }).length;
+    return fs
+      .readdirSync("/proc")
+      .filter((name) => /^\d+$/.test(name))
+      .filter((name) => {
+        try {
+          return fs.statSync(`/proc/${name}`).uid === uid;
+        } catch {
+          return false;
+        }
+      }).length;
   } catch {
     return 1000;
   }
@@ -388,40 +446,96 @@ function located(program) {
 // The command enters the sandbox's cgroup (a shell's `echo $$`) before anything else runs.
 // `cut`: the search for copies of the case files stopped at its bound.
 function sandboxed(command, { language, folders, seconds, modulePaths = [] }) {
-  const own = [...new Set(interpreterFiles(language, modulePaths))].filter((file) => real(file) && !system(real(file)));
+  const own = [...new Set(interpreterFiles(language, modulePaths))].filter(
+    (file) => real(file) && !system(real(file)),
+  );
   const bound = [...new Set([...folders, ...own.map(real)])];
-  const hiding = hidingMounts(bound.filter((file) => fs.statSync(file).isDirectory()),
-    [...new Set([...folders, ...interpreterSearched(language, modulePaths)])]);
-  const env = Object.entries({ PATH: "/usr/local/bin:/usr/bin:/bin", HOME: "/tmp", LANG: "C.UTF-8", ...command.env })
-    .flatMap(([name, value]) => ["--setenv", name, value]);
+  const hiding = hidingMounts(
+    bound.filter((file) => fs.statSync(file).isDirectory()),
+    [...new Set([...folders, ...interpreterSearched(language, modulePaths)])],
+  );
+  const env = Object.entries({
+    PATH: "/usr/local/bin:/usr/bin:/bin",
+    HOME: "/tmp",
+    LANG: "C.UTF-8",
+    ...command.env,
+  }).flatMap(([name, value]) => ["--setenv", name, value]);
   const group = sandboxCgroup();
   const bwrap = [
-    "--unshare-all", "--die-with-parent", "--new-session", "--clearenv", ...env,
+    "--unshare-all",
+    "--die-with-parent",
+    "--new-session",
+    "--clearenv",
+    ...env,
     ...(isRoot() ? ["--unshare-user", "--uid", NOBODY, "--gid", NOBODY] : []),
-    ...systemMounts(), "--proc", "/proc", "--dev", "/dev",
-    "--size", `${TMP_BYTES}`, "--tmpfs", "/tmp", "--size", `${SHM_BYTES}`, "--tmpfs", "/dev/shm",
+    ...systemMounts(),
+    "--proc",
+    "/proc",
+    "--dev",
+    "/dev",
+    "--size",
+    `${TMP_BYTES}`,
+    "--tmpfs",
+    "/tmp",
+    "--size",
+    `${SHM_BYTES}`,
+    "--tmpfs",
+    "/dev/shm",
     ...own.flatMap((file) => ["--ro-bind", file, file]),
     ...folders.flatMap((dir) => ["--ro-bind", dir, dir]),
     ...hiding.args,
-    "--ro-bind", RUNNERS, RUNNERS,
-    ...hiding.readOnly, "--remount-ro", "/dev", "--remount-ro", "/",
-    "--chdir", folders[0], "--info-fd", "6",
+    "--ro-bind",
+    RUNNERS,
+    RUNNERS,
+    ...hiding.readOnly,
+    "--remount-ro",
+    "/dev",
+    "--remount-ro",
+    "/",
+    "--chdir",
+    folders[0],
+    "--info-fd",
+    "6",
   ];
-  const limits = [`--cpu=${Math.ceil(seconds)}`, `--fsize=${FILE_BYTES}`,
-    ...(group.folders.length ? [] : [`--data=${MEMORY}`, `--nproc=${userProcesses() + PROCESSES}`])];
+  const limits = [
+    `--cpu=${Math.ceil(seconds)}`,
+    `--fsize=${FILE_BYTES}`,
+    ...(group.folders.length ? [] : [`--data=${MEMORY}`, `--nproc=${userProcesses() + PROCESSES}`]),
+  ];
   // Root's processes are not counted against RLIMIT_NPROC: without a cgroup, root's
   // sandbox runs as nobody outside as well.
   const asNobody = isRoot() && group.folders.length === 0;
-  const unreadable = asNobody ? [...bound, RUNNERS].find((file) => !othersCanRead(file)) : undefined;
+  const unreadable = asNobody
+    ? [...bound, RUNNERS].find((file) => !othersCanRead(file))
+    : undefined;
   if (unreadable) {
-    return { refused: `run as root where no cgroup can be made, the checker runs your code as nobody (the kernel does not count root's processes), and nobody cannot read ${unreadable}: make it readable by others (chmod o+rX), or run the checker as a user` };
+    return {
+      refused: `run as root where no cgroup can be made, the checker runs your code as nobody (the kernel does not count root's processes), and nobody cannot read ${unreadable}: make it readable by others (chmod o+rX), or run the checker as a user`,
+    };
   }
-  const nobody = asNobody ? [located("setpriv"), `--reuid=${NOBODY}`, `--regid=${NOBODY}`, "--clear-groups", "--"] : [];
-  const run = [located("prlimit"), ...limits, "--", ...nobody, located("bwrap"), "--args", "5", command.file, ...command.args];
-  const enter = group.folders.map((folder) => `echo $$ > ${path.join(folder, "cgroup.procs")} && `).join("");
+  const nobody = asNobody
+    ? [located("setpriv"), `--reuid=${NOBODY}`, `--regid=${NOBODY}`, "--clear-groups", "--"]
+    : [];
+  const run = [
+    located("prlimit"),
+    ...limits,
+    "--",
+    ...nobody,
+    located("bwrap"),
+    "--args",
+    "5",
+    command.file,
+    ...command.args,
+  ];
+  const enter = group.folders
+    .map((folder) => `echo $$ > ${path.join(folder, "cgroup.procs")} && `)
+    .join("");
   return {
-    file: "/bin/sh", args: ["-c", `${enter}exec /usr/bin/env -i "$@"`, "sh", ...run], env: {},
-    argsText: bwrap.map((word) => `${word}\0`).join(""), cut: hiding.cut,
+    file: "/bin/sh",
+    args: ["-c", `${enter}exec /usr/bin/env -i "$@"`, "sh", ...run],
+    env: {},
+    argsText: bwrap.map((word) => `${word}\0`).join(""),
+    cut: hiding.cut,
   };
 }
 

@@ -11,13 +11,18 @@ const path = require("path");
 
 function pythonFunctions(file, python) {
   const runner = path.join(__dirname, "runners", "python_runner.py");
-  const text = execFileSync(python, ["-I", "-B", runner, "--declared", file],
-    { encoding: "utf8", timeout: 20000, stdio: ["ignore", "pipe", "ignore"] });
+  const text = execFileSync(python, ["-I", "-B", runner, "--declared", file], {
+    encoding: "utf8",
+    timeout: 20000,
+    stdio: ["ignore", "pipe", "ignore"],
+  });
   return new Map(Object.entries(JSON.parse(text)));
 }
 
 async function jsFunctions(file, nodePath) {
-  const dir = nodePath.split(path.delimiter).find((each) => fs.existsSync(path.join(each, "acorn", "package.json")));
+  const dir = nodePath
+    .split(path.delimiter)
+    .find((each) => fs.existsSync(path.join(each, "acorn", "package.json")));
   const acorn = require(path.join(dir, "acorn"));
   const { declaredFunctions } = await import("./runners/js_core.mjs");
   const source = fs.readFileSync(file, "utf8");
@@ -33,7 +38,11 @@ async function jsFunctions(file, nodePath) {
   for (const code of codes) {
     for (const sourceType of ["script", "module"]) {
       try {
-        const program = acorn.parse(code, { ecmaVersion: "latest", sourceType, allowHashBang: true });
+        const program = acorn.parse(code, {
+          ecmaVersion: "latest",
+          sourceType,
+          allowHashBang: true,
+        });
         for (const [name, each] of declaredFunctions(program)) found.set(name, each);
         break;
       } catch {
@@ -48,7 +57,9 @@ async function jsFunctions(file, nodePath) {
 // null when it cannot be read (the runner says why).
 async function definedFunctions(file, language, { python, nodePath }) {
   try {
-    return language === "python" ? pythonFunctions(file, python) : await jsFunctions(file, nodePath);
+    return language === "python"
+      ? pythonFunctions(file, python)
+      : await jsFunctions(file, nodePath);
   } catch {
     return null;
   }

@@ -6,49 +6,64 @@
 // page opens at ?figure=NAME&view=x,y,z,yaw,pitch when asked, and keeps the figure shown
 // in its address; what it cannot show is said in the page, and the chapter's opening
 // figure drawn instead.
-'use strict';
+"use strict";
 
 // The keys of program/camera_controls.h's CameraKey, in its order (0 to 9), named as
 // KeyboardEvent.key names them: forward, back, right, left, up, down, turn left, turn
 // right, look up, look down.
-const kCameraKeys = ['ArrowUp', 'ArrowDown', 'd', 'a', 'PageUp', 'PageDown', 'q', 'e', 'Home', 'End'];
+const kCameraKeys = [
+  "ArrowUp",
+  "ArrowDown",
+  "d",
+  "a",
+  "PageUp",
+  "PageDown",
+  "q",
+  "e",
+  "Home",
+  "End",
+];
 
-const live = document.getElementById('live');
-const canvas = document.getElementById('canvas');
+const live = document.getElementById("live");
+const canvas = document.getElementById("canvas");
 // Each figure's size: its golden image's (600 x 600, the programs' default, without one).
 const sizes = JSON.parse(live.dataset.sizes);
 const SizeOf = (name) => sizes[name] ?? [600, 600];
 
 let figuresWorker = null;
-let figures = [];      // {name, caption, hasCamera, costPartner, hasCostView, button}
-let shown = 0;         // the index of the figure shown
-let view = '0,0,0,0,0';  // the camera's view, kept here: a worker ended mid-draw forgets it
+let figures = []; // {name, caption, hasCamera, costPartner, hasCostView, button}
+let shown = 0; // the index of the figure shown
+let view = "0,0,0,0,0"; // the camera's view, kept here: a worker ended mid-draw forgets it
 let settleTime = 150;
-let settle = null;     // the timer that draws the full frame once the camera stops
-let wanted = null;     // the frame to draw when the worker is free: 'full' or 'preview'
-let drawing = false;   // a Draw loop is running
-let generation = 0;    // counts the worker's restarts: a loop of an earlier one stops
-let siteModel = '';    // the name of the site's model drawn (models.js), '' when none
+let settle = null; // the timer that draws the full frame once the camera stops
+let wanted = null; // the frame to draw when the worker is free: 'full' or 'preview'
+let drawing = false; // a Draw loop is running
+let generation = 0; // counts the worker's restarts: a loop of an earlier one stops
+let siteModel = ""; // the name of the site's model drawn (models.js), '' when none
 
 function Say(id, text) {
   const element = document.getElementById(id);
   element.textContent = text;
-  element.hidden = text === '';
+  element.hidden = text === "";
 }
 
 // Puts a frame on the canvas: a full one as it is, a preview stretched to the figure's
 // size (as the window does).
 function Show(frame, full, width, height) {
-  const image = new ImageData(new Uint8ClampedArray(frame.pixels.buffer), frame.width, frame.height);
+  const image = new ImageData(
+    new Uint8ClampedArray(frame.pixels.buffer),
+    frame.width,
+    frame.height,
+  );
   canvas.width = width;
   canvas.height = height;
-  canvas.style.maxWidth = `${width}px`;  // a 512-pixel figure at its own size, not stretched
+  canvas.style.maxWidth = `${width}px`; // a 512-pixel figure at its own size, not stretched
   if (full) {
-    canvas.getContext('2d').putImageData(image, 0, 0);
+    canvas.getContext("2d").putImageData(image, 0, 0);
   } else {
     const preview = new OffscreenCanvas(image.width, image.height);
-    preview.getContext('2d').putImageData(image, 0, 0);
-    const context = canvas.getContext('2d');
+    preview.getContext("2d").putImageData(image, 0, 0);
+    const context = canvas.getContext("2d");
     context.imageSmoothingEnabled = false;
     context.drawImage(preview, 0, 0, width, height);
   }
@@ -57,29 +72,39 @@ function Show(frame, full, width, height) {
 // Draws the figure shown, in the worker, at its full size or while the camera moves at
 // the preview size; one frame at a time, the latest one wanted next.
 async function Draw(full) {
-  wanted = full || wanted === 'full' ? 'full' : 'preview';
+  wanted = full || wanted === "full" ? "full" : "preview";
   if (drawing) return;
   drawing = true;
   const mine = generation;
   while (wanted && mine === generation) {
-    const isFull = wanted === 'full';
+    const isFull = wanted === "full";
     wanted = null;
     const index = shown;
     const figure = figures[index];
     const [width, height] = SizeOf(figure.name);
-    const frame = await figuresWorker.Request({ op: 'draw', index, width, height, full: isFull,
-      view: figure.hasCamera ? view : undefined });
+    const frame = await figuresWorker.Request({
+      op: "draw",
+      index,
+      width,
+      height,
+      full: isFull,
+      view: figure.hasCamera ? view : undefined,
+    });
     if (frame.cancelled || index !== shown || mine !== generation) continue;
     if (frame.problem) {
-      Say('problem', `${figure.name} could not be drawn: ${frame.problem}`);
+      Say("problem", `${figure.name} could not be drawn: ${frame.problem}`);
       continue;
     }
     Show(frame, isFull, width, height);
-    const time = frame.milliseconds < 10 ? frame.milliseconds.toFixed(1) : frame.milliseconds.toFixed(0);
-    Say('status', `${figure.name}: ${frame.width} × ${frame.height} drawn in ${time} ms` +
-                  (isFull ? '' : ', at half size while the camera moves') +
-                  (frame.measured ? `; ${frame.measured}` : ''));
-    canvas.dataset.drawn = isFull ? 'full' : 'preview';
+    const time =
+      frame.milliseconds < 10 ? frame.milliseconds.toFixed(1) : frame.milliseconds.toFixed(0);
+    Say(
+      "status",
+      `${figure.name}: ${frame.width} × ${frame.height} drawn in ${time} ms` +
+        (isFull ? "" : ", at half size while the camera moves") +
+        (frame.measured ? `; ${frame.measured}` : ""),
+    );
+    canvas.dataset.drawn = isFull ? "full" : "preview";
     canvas.dataset.milliseconds = frame.milliseconds;
   }
   if (mine === generation) drawing = false;
@@ -89,17 +114,17 @@ async function Draw(full) {
 function Address() {
   const figure = figures[shown];
   const query = new URLSearchParams(siteModel ? { model: siteModel } : {});
-  query.set('figure', figure.name);
-  if (figure.hasCamera) query.set('view', view);
-  return '?' + query.toString();
+  query.set("figure", figure.name);
+  if (figure.hasCamera) query.set("view", view);
+  return "?" + query.toString();
 }
 
 function ShowView() {
   const figure = figures[shown];
-  document.getElementById('camera').hidden = !figure.hasCamera;
-  document.getElementById('view').textContent = view;
-  document.getElementById('view-link').href = Address();
-  history.replaceState(null, '', Address());
+  document.getElementById("camera").hidden = !figure.hasCamera;
+  document.getElementById("view").textContent = view;
+  document.getElementById("view-link").href = Address();
+  history.replaceState(null, "", Address());
 }
 
 // Gives up the frame being drawn, if any: the worker is ended and made anew.
@@ -117,16 +142,17 @@ function StopDrawing() {
 function Select(index) {
   StopDrawing();
   shown = index;
-  figures.forEach((figure, i) => figure.button.setAttribute('aria-checked', i === index));
-  figures[index].button.scrollIntoView({ block: 'nearest' });
-  Say('caption', figures[index].caption);
-  Say('status', `drawing ${figures[index].name}…`);
-  document.dispatchEvent(new CustomEvent('cgfs-shown', { detail: figures[index].name }));
+  figures.forEach((figure, i) => figure.button.setAttribute("aria-checked", i === index));
+  figures[index].button.scrollIntoView({ block: "nearest" });
+  Say("caption", figures[index].caption);
+  Say("status", `drawing ${figures[index].name}…`);
+  document.dispatchEvent(new CustomEvent("cgfs-shown", { detail: figures[index].name }));
   const partner = figures[index].costPartner;
-  document.getElementById('cost').hidden = partner < 0;
+  document.getElementById("cost").hidden = partner < 0;
   if (partner >= 0) {
-    document.getElementById('cost').textContent = figures[index].hasCostView
-      ? `where the work goes: ${figures[partner].name} (C)` : `back to ${figures[partner].name} (C)`;
+    document.getElementById("cost").textContent = figures[index].hasCostView
+      ? `where the work goes: ${figures[partner].name} (C)`
+      : `back to ${figures[partner].name} (C)`;
   }
   ShowView();
   delete canvas.dataset.drawn;
@@ -148,10 +174,10 @@ function CameraMoved() {
 let moves = Promise.resolve();
 function MoveCamera(move) {
   moves = moves.then(async () => {
-    const answer = await figuresWorker.Request({ op: 'camera', view, ...move });
+    const answer = await figuresWorker.Request({ op: "camera", view, ...move });
     if (answer.cancelled) return;
     if (answer.problem) {
-      Say('problem', answer.problem);
+      Say("problem", answer.problem);
       return;
     }
     view = answer.view;
@@ -161,15 +187,15 @@ function MoveCamera(move) {
 
 function OnKey(event) {
   if (event.altKey || event.ctrlKey || event.metaKey) return;
-  if (event.target.closest?.('#your-code, input, textarea, select, .CodeMirror')) return;
+  if (event.target.closest?.("#your-code, input, textarea, select, .CodeMirror")) return;
   const key = event.key.length === 1 ? event.key.toLowerCase() : event.key;
-  if (key === 'ArrowLeft' || key === 'ArrowRight') {
-    Select((shown + (key === 'ArrowLeft' ? figures.length - 1 : 1)) % figures.length);
-  } else if (key === 'c' && figures[shown].costPartner >= 0) {
+  if (key === "ArrowLeft" || key === "ArrowRight") {
+    Select((shown + (key === "ArrowLeft" ? figures.length - 1 : 1)) % figures.length);
+  } else if (key === "c" && figures[shown].costPartner >= 0) {
     Select(figures[shown].costPartner);
   } else if (figures[shown].hasCamera && kCameraKeys.includes(key)) {
     MoveCamera({ key: kCameraKeys.indexOf(key) });
-  } else if (figures[shown].hasCamera && key === 'r') {
+  } else if (figures[shown].hasCamera && key === "r") {
     MoveCamera({ reset: true });
   } else {
     return;
@@ -181,13 +207,13 @@ function OnKey(event) {
 // show the canvas smaller than it is).
 function FollowDrags() {
   let last = null;
-  canvas.addEventListener('pointerdown', (event) => {
+  canvas.addEventListener("pointerdown", (event) => {
     if (event.button !== 0 || !figures[shown].hasCamera) return;
     last = [event.clientX, event.clientY];
     canvas.setPointerCapture(event.pointerId);
     event.preventDefault();
   });
-  canvas.addEventListener('pointermove', (event) => {
+  canvas.addEventListener("pointermove", (event) => {
     if (last === null) return;
     const scale = canvas.width / canvas.getBoundingClientRect().width;
     const right = Math.round((event.clientX - last[0]) * scale);
@@ -196,28 +222,32 @@ function FollowDrags() {
     last = [last[0] + right / scale, last[1] + down / scale];
     MoveCamera({ drag: [right, down] });
   });
-  const stop = () => { last = null; };
-  canvas.addEventListener('pointerup', stop);
-  canvas.addEventListener('pointercancel', stop);
+  const stop = () => {
+    last = null;
+  };
+  canvas.addEventListener("pointerup", stop);
+  canvas.addEventListener("pointercancel", stop);
 }
 
 // The buttons that walk and turn the camera on a screen without keys: each a key of
 // kCameraKeys, repeated while held.
 function CameraButtons() {
-  for (const button of document.querySelectorAll('#camera-pad button[data-key]')) {
+  for (const button of document.querySelectorAll("#camera-pad button[data-key]")) {
     let repeat = null;
     const press = () => MoveCamera({ key: Number(button.dataset.key) });
-    button.addEventListener('pointerdown', (event) => {
+    button.addEventListener("pointerdown", (event) => {
       event.preventDefault();
       press();
       clearInterval(repeat);
       repeat = setInterval(press, 120);
     });
-    for (const end of ['pointerup', 'pointerleave', 'pointercancel']) {
+    for (const end of ["pointerup", "pointerleave", "pointercancel"]) {
       button.addEventListener(end, () => clearInterval(repeat));
     }
   }
-  document.getElementById('camera-reset').addEventListener('click', () => MoveCamera({ reset: true }));
+  document
+    .getElementById("camera-reset")
+    .addEventListener("click", () => MoveCamera({ reset: true }));
 }
 
 // The figure and view the address asks for, or the chapter's opening figure; what
@@ -227,24 +257,31 @@ async function Opening() {
   const problems = [];
   const opening = figures.findIndex((figure) => figure.name === live.dataset.opening);
   let index = Math.max(0, opening);
-  if (query.has('figure')) {
-    const asked = figures.findIndex((figure) => figure.name === query.get('figure'));
+  if (query.has("figure")) {
+    const asked = figures.findIndex((figure) => figure.name === query.get("figure"));
     if (asked < 0) {
-      problems.push(`This chapter has no figure "${query.get('figure')}"; its figures are listed above.`);
+      problems.push(
+        `This chapter has no figure "${query.get("figure")}"; its figures are listed above.`,
+      );
     } else {
       index = asked;
     }
   }
-  if (query.has('view')) {
+  if (query.has("view")) {
     if (!figures[index].hasCamera) {
-      problems.push(`${figures[index].name} has no camera to move; the view "${query.get('view')}" is not used.`);
+      problems.push(
+        `${figures[index].name} has no camera to move; the view "${query.get("view")}" is not used.`,
+      );
     } else {
-      const answer = await figuresWorker.Request({ op: 'camera', set: query.get('view') });
-      if (answer.problem) problems.push(`No view "${query.get('view')}": ${answer.problem}; the chapter's own view is shown.`);
+      const answer = await figuresWorker.Request({ op: "camera", set: query.get("view") });
+      if (answer.problem)
+        problems.push(
+          `No view "${query.get("view")}": ${answer.problem}; the chapter's own view is shown.`,
+        );
       else view = answer.view;
     }
   }
-  Say('problem', problems.join(' '));
+  Say("problem", problems.join(" "));
   return index;
 }
 
@@ -252,51 +289,61 @@ async function Opening() {
 // another figure's C switches to). Lists there were are replaced, and the view is the
 // chapter's again (a model's figures replace the chapter's, models.js).
 function ListFigures(described) {
-  document.getElementById('figures').replaceChildren();
-  document.getElementById('cost-views').replaceChildren();
+  document.getElementById("figures").replaceChildren();
+  document.getElementById("cost-views").replaceChildren();
   figures = [];
-  view = '0,0,0,0,0';
+  view = "0,0,0,0,0";
   const isCostView = (figure) => figure.costPartner >= 0 && !figure.hasCostView;
   for (const [i, each] of described.entries()) {
     const figure = { ...each };
-    figure.button = document.createElement('button');
-    figure.button.type = 'button';
+    figure.button = document.createElement("button");
+    figure.button.type = "button";
     figure.button.textContent = figure.name;
-    figure.button.setAttribute('role', 'radio');
-    figure.button.addEventListener('click', () => Select(i));
-    document.getElementById(isCostView(figure) ? 'cost-views' : 'figures').append(figure.button);
+    figure.button.setAttribute("role", "radio");
+    figure.button.addEventListener("click", () => Select(i));
+    document.getElementById(isCostView(figure) ? "cost-views" : "figures").append(figure.button);
     figures.push(figure);
   }
-  document.getElementById('cost-views-group').hidden = !figures.some(isCostView);
+  document.getElementById("cost-views-group").hidden = !figures.some(isCostView);
   // How many there are: the list shows three rows, and scrolls.
   const costViews = figures.filter(isCostView).length;
   const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
-  Say('figures-count', plural(figures.length - costViews, 'figure', 'figures') +
-      (costViews ? ` and ${plural(costViews, 'view', 'views')} of where the work goes` : '') +
-      (figures.length > 9 ? ': the list scrolls' : ''));
+  Say(
+    "figures-count",
+    plural(figures.length - costViews, "figure", "figures") +
+      (costViews ? ` and ${plural(costViews, "view", "views")} of where the work goes` : "") +
+      (figures.length > 9 ? ": the list scrolls" : ""),
+  );
 }
 
 // The other column's two tabs: the chapter's README, and the reader's own code. On a
 // wide screen the code's tab shows the README beside the editor, in place of the
 // figures (site.css: main[data-tab="tab-code"]); on a narrow one, the editor alone.
 function Tabs() {
-  const tabs = [['tab-readme', 'readme'], ['tab-code', 'your-code']];
-  const wide = matchMedia('(min-width: 1100px)');
-  let chosen = 'tab-readme';
+  const tabs = [
+    ["tab-readme", "readme"],
+    ["tab-code", "your-code"],
+  ];
+  const wide = matchMedia("(min-width: 1100px)");
+  let chosen = "tab-readme";
   const show = (tab) => {
     chosen = tab;
     for (const [each, panel] of tabs) {
-      document.getElementById(each).setAttribute('aria-selected', each === tab);
+      document.getElementById(each).setAttribute("aria-selected", each === tab);
       const element = document.getElementById(panel);
-      if (element) element.hidden = each !== tab && !(panel === 'readme' && wide.matches);
+      if (element) element.hidden = each !== tab && !(panel === "readme" && wide.matches);
     }
-    document.querySelector('main.chapter').dataset.tab = tab;
-    document.dispatchEvent(new CustomEvent('cgfs-tab', { detail: tab }));
+    document.querySelector("main.chapter").dataset.tab = tab;
+    document.dispatchEvent(new CustomEvent("cgfs-tab", { detail: tab }));
   };
-  for (const [tab] of tabs) document.getElementById(tab).addEventListener('click', () => show(tab));
-  wide.addEventListener('change', () => show(chosen));
-  if (!document.getElementById('your-code')) document.getElementById('tabs').hidden = true;
-  show(location.hash === '#your-code' || location.hash.startsWith('#code=') ? 'tab-code' : 'tab-readme');
+  for (const [tab] of tabs) document.getElementById(tab).addEventListener("click", () => show(tab));
+  wide.addEventListener("change", () => show(chosen));
+  if (!document.getElementById("your-code")) document.getElementById("tabs").hidden = true;
+  show(
+    location.hash === "#your-code" || location.hash.startsWith("#code=")
+      ? "tab-code"
+      : "tab-readme",
+  );
 }
 
 // The chapter's parameters as controls (make_site.py's controls_box, controls.json): for
@@ -305,57 +352,68 @@ function Tabs() {
 // chosen here is told to the Your code panel (the event cgfs-figure), which draws the
 // reader's own beside it when asked.
 function Controls() {
-  const box = document.getElementById('controls');
+  const box = document.getElementById("controls");
   if (!box) return;
   const groups = JSON.parse(box.dataset.controls);
   const rows = [];
   for (const [g, { scene, parameter, values }] of groups.entries()) {
-    const row = document.createElement('fieldset');
-    row.className = 'control';
-    const legend = document.createElement('legend');
+    const row = document.createElement("fieldset");
+    row.className = "control";
+    const legend = document.createElement("legend");
     legend.textContent = `${scene}: ${parameter}`;
     row.append(legend);
     for (const [label, figure] of values) {
-      const choice = document.createElement('label');
-      const radio = Object.assign(document.createElement('input'), { type: 'radio', name: `control-${g}`, value: figure });
-      radio.addEventListener('change', () => {
+      const choice = document.createElement("label");
+      const radio = Object.assign(document.createElement("input"), {
+        type: "radio",
+        name: `control-${g}`,
+        value: figure,
+      });
+      radio.addEventListener("change", () => {
         const index = figures.findIndex((each) => each.name === figure);
         if (index < 0) return;
         Select(index);
-        document.dispatchEvent(new CustomEvent('cgfs-figure', { detail: figure }));
+        document.dispatchEvent(new CustomEvent("cgfs-figure", { detail: figure }));
       });
       choice.append(radio, ` ${label}`);
       row.append(choice);
     }
     rows.push(row);
   }
-  box.querySelector('.controls-title').after(...rows);
-  document.addEventListener('cgfs-shown', ({ detail }) => {
-    for (const radio of box.querySelectorAll('input[type="radio"]')) radio.checked = radio.value === detail;
+  box.querySelector(".controls-title").after(...rows);
+  document.addEventListener("cgfs-shown", ({ detail }) => {
+    for (const radio of box.querySelectorAll('input[type="radio"]'))
+      radio.checked = radio.value === detail;
   });
 }
 
 async function Start() {
   Tabs();
   Controls();
-  figuresWorker = new FiguresWorker(live.dataset.module, CGFS_FIGURES_OF[live.dataset.chapter], (fraction) => {
-    Say('status', `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
-  });
-  let described = await figuresWorker.Request({ op: 'describe' });
+  figuresWorker = new FiguresWorker(
+    live.dataset.module,
+    CGFS_FIGURES_OF[live.dataset.chapter],
+    (fraction) => {
+      Say("status", `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
+    },
+  );
+  let described = await figuresWorker.Request({ op: "describe" });
   if (described.problem) throw new Error(described.problem);
   settleTime = described.settle;
-  if (document.getElementById('model')) described = await ModelsStart() ?? described;
+  if (document.getElementById("model")) described = (await ModelsStart()) ?? described;
   ListFigures(described.figures);
-  document.getElementById('cost').addEventListener('click', () => Select(figures[shown].costPartner));
-  document.getElementById('reset').addEventListener('click', () => MoveCamera({ reset: true }));
-  document.addEventListener('keydown', OnKey);
+  document
+    .getElementById("cost")
+    .addEventListener("click", () => Select(figures[shown].costPartner));
+  document.getElementById("reset").addEventListener("click", () => MoveCamera({ reset: true }));
+  document.addEventListener("keydown", OnKey);
   FollowDrags();
   CameraButtons();
   Select(await Opening());
-  live.dataset.ready = 'yes';
+  live.dataset.ready = "yes";
 }
 
 Start().catch((error) => {
-  Say('status', '');
-  Say('problem', `The chapter's code could not be loaded: ${error.message ?? error}`);
+  Say("status", "");
+  Say("problem", `The chapter's code could not be loaded: ${error.message ?? error}`);
 });

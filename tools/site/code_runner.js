@@ -8,9 +8,9 @@
 // process's. A case that runs past its time limit ends its worker; the next case gets a
 // new one. PageRunner is the runner the checker's core (vendor/check.js) drives, as the
 // command line's ProcessRunner is.
-'use strict';
+"use strict";
 
-const kSiteRoot = new URL('.', document.currentScript.src);
+const kSiteRoot = new URL(".", document.currentScript.src);
 
 // Pyodide's files, from vendor/pyodide.js (a script, which a page opened from a file may
 // load where it may not fetch), as its base64 text: each Python worker decodes the
@@ -19,9 +19,10 @@ const kSiteRoot = new URL('.', document.currentScript.src);
 let pyodideAssets = null;
 function PyodideAssets() {
   pyodideAssets ??= new Promise((resolve, reject) => {
-    const script = document.createElement('script');
-    script.src = new URL('vendor/pyodide.js', kSiteRoot).href;
-    script.onerror = () => reject(new Error('vendor/pyodide.js could not be loaded: build the site with scripts/site'));
+    const script = document.createElement("script");
+    script.src = new URL("vendor/pyodide.js", kSiteRoot).href;
+    script.onerror = () =>
+      reject(new Error("vendor/pyodide.js could not be loaded: build the site with scripts/site"));
     script.onload = () => {
       resolve(self.CGFS_PYODIDE);
       self.CGFS_PYODIDE = undefined;
@@ -31,7 +32,7 @@ function PyodideAssets() {
   return pyodideAssets;
 }
 
-const WorkerAddress = (text) => URL.createObjectURL(new Blob([text], { type: 'text/javascript' }));
+const WorkerAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
 
 // One worker: requests answered one at a time, each within its limit (seconds) or the
 // worker is ended. `onProgress(fraction)` hears a draw's progress.
@@ -39,11 +40,16 @@ class CodeWorker {
   // onProgress(fraction): how far Python's start has come.
   static async Start(language, onProgress) {
     const worker = new CodeWorker(language, onProgress);
-    if (language === 'python') {
-      const answer = await worker.Request({ op: 'init', assets: await PyodideAssets(), runner: CGFS_SOURCES.pythonRunner }, 300);
+    if (language === "python") {
+      const answer = await worker.Request(
+        { op: "init", assets: await PyodideAssets(), runner: CGFS_SOURCES.pythonRunner },
+        300,
+      );
       if (!answer.ready) {
         worker.End();
-        throw new Error(`Python could not be started: ${answer.unreadable ?? 'it took more than 300 s'}`);
+        throw new Error(
+          `Python could not be started: ${answer.unreadable ?? "it took more than 300 s"}`,
+        );
       }
     }
     return worker;
@@ -51,7 +57,8 @@ class CodeWorker {
 
   constructor(language, onProgress = () => {}) {
     CodeWorker.addresses ??= {
-      javascript: WorkerAddress(CGFS_SOURCES.jsWorker), python: WorkerAddress(CGFS_SOURCES.pythonWorker),
+      javascript: WorkerAddress(CGFS_SOURCES.jsWorker),
+      python: WorkerAddress(CGFS_SOURCES.pythonWorker),
     };
     this.worker = new Worker(CodeWorker.addresses[language]);
     this.next = 1;
@@ -59,13 +66,15 @@ class CodeWorker {
     this.onProgress = onProgress;
     this.onPreview = () => {};
     this.worker.onmessage = ({ data }) => {
-      if ('progress' in data) this.onProgress(data.progress);
-      else if ('preview' in data) this.onPreview(data.preview);
+      if ("progress" in data) this.onProgress(data.progress);
+      else if ("preview" in data) this.onPreview(data.preview);
       else if (this.waiting?.id === data.id) this.waiting.resolve(data);
     };
   }
 
-  get Alive() { return this.worker !== null; }
+  get Alive() {
+    return this.worker !== null;
+  }
 
   // The answer, or { timeout: true } when there was none within `seconds` (the worker
   // is ended then).
@@ -73,8 +82,19 @@ class CodeWorker {
     if (!this.Alive) return Promise.resolve({ timeout: true });
     const id = this.next++;
     return new Promise((resolve) => {
-      const timer = setTimeout(() => { this.waiting = null; this.End(); resolve({ timeout: true }); }, seconds * 1000);
-      this.waiting = { id, resolve: (answer) => { clearTimeout(timer); this.waiting = null; resolve(answer); } };
+      const timer = setTimeout(() => {
+        this.waiting = null;
+        this.End();
+        resolve({ timeout: true });
+      }, seconds * 1000);
+      this.waiting = {
+        id,
+        resolve: (answer) => {
+          clearTimeout(timer);
+          this.waiting = null;
+          resolve(answer);
+        },
+      };
       this.worker.postMessage({ ...message, id });
     });
   }
@@ -93,9 +113,9 @@ class CodeWorker {
 class WorkerSupply {
   constructor(language) {
     this.language = language;
-    this.ready = [];  // { promise, listener }: the workers ready or starting, the oldest first
+    this.ready = []; // { promise, listener }: the workers ready or starting, the oldest first
     this.starting = false;
-    this.target = language === 'python' ? 2 : 1;
+    this.target = language === "python" ? 2 : 1;
   }
 
   // Starts workers until `target` are ready or starting, one at a time.
@@ -109,20 +129,26 @@ class WorkerSupply {
       this.starting = false;
       this.Fill();
     };
-    entry.promise.then(() => {
-      entry.done = true;
-      started();
-    }, () => {
-      this.ready = this.ready.filter((each) => each !== entry);
-      started();
-    });
+    entry.promise.then(
+      () => {
+        entry.done = true;
+        started();
+      },
+      () => {
+        this.ready = this.ready.filter((each) => each !== entry);
+        started();
+      },
+    );
   }
 
   // Python started ahead, as soon as the reader chooses it.
   Warm(onStarting = () => {}) {
     this.Fill();
     this.ready[0].listener = onStarting;
-    this.ready[0].promise.then(() => onStarting(1), () => {});
+    this.ready[0].promise.then(
+      () => onStarting(1),
+      () => {},
+    );
   }
 
   // A worker no code has run in (the oldest made ready). The supply is filled again by
@@ -139,7 +165,9 @@ class WorkerSupply {
   }
 
   // How many workers are ready now (for the site's test).
-  get readyNow() { return this.ready.filter((entry) => entry.done).length; }
+  get readyNow() {
+    return this.ready.filter((entry) => entry.done).length;
+  }
 }
 
 const supplies = {};
@@ -152,32 +180,60 @@ const RefillWorkers = () => Object.values(supplies).forEach((supply) => supply.F
 // command line's words when it does not load.
 async function LoadInWorker(worker, { code, file, functions, names }) {
   const { CheckError, LOAD_LIMIT, heldAgainstFile } = CGFS_CHECK;
-  const declared = await worker.Request({ op: 'declare', code }, LOAD_LIMIT);
-  const message = await worker.Request({ op: 'load', code, file, functions, names }, LOAD_LIMIT);
-  if (message.timeout) throw new CheckError(`your code does not load: still running after ${LOAD_LIMIT} s`);
-  if (typeof message.load_error === 'string') throw new CheckError(message.load_error.split('\n')[0].slice(0, 500));
+  const declared = await worker.Request({ op: "declare", code }, LOAD_LIMIT);
+  const message = await worker.Request({ op: "load", code, file, functions, names }, LOAD_LIMIT);
+  if (message.timeout)
+    throw new CheckError(`your code does not load: still running after ${LOAD_LIMIT} s`);
+  if (typeof message.load_error === "string")
+    throw new CheckError(message.load_error.split("\n")[0].slice(0, 500));
   const facts = message.loaded;
-  if (!facts || typeof facts !== 'object' || !facts.functions || typeof facts.functions !== 'object' ||
-      !Array.isArray(facts.defined)) {
-    throw new CheckError('your code does not load: it said something else while loading');
+  if (
+    !facts ||
+    typeof facts !== "object" ||
+    !facts.functions ||
+    typeof facts.functions !== "object" ||
+    !Array.isArray(facts.defined)
+  ) {
+    throw new CheckError("your code does not load: it said something else while loading");
   }
-  return heldAgainstFile(facts, declared.declared ? new Map(Object.entries(declared.declared)) : null, functions);
+  return heldAgainstFile(
+    facts,
+    declared.declared ? new Map(Object.entries(declared.declared)) : null,
+    functions,
+  );
 }
 
 // The runner the checker's core drives: load, then a case at a time.
 class PageRunner {
   // onStarting(fraction): how far Python's start has come, while the check waits for it.
-  constructor({ language, code, file, timeLimit, totalCases, onStatus = () => {}, onStarting = () => {} }) {
-    Object.assign(this, { language, code, file, timeLimit, totalCases, onStatus, onStarting, worker: null });
+  constructor({
+    language,
+    code,
+    file,
+    timeLimit,
+    totalCases,
+    onStatus = () => {},
+    onStarting = () => {},
+  }) {
+    Object.assign(this, {
+      language,
+      code,
+      file,
+      timeLimit,
+      totalCases,
+      onStatus,
+      onStarting,
+      worker: null,
+    });
     this.started = Date.now();
     this.bound = (totalCases * timeLimit + CGFS_CHECK.LOAD_LIMIT) * 1000;
   }
 
   async load(functions, names) {
     this.loadRequest = { code: this.code, file: this.file, functions, names };
-    if (this.language === 'python') this.onStatus('starting Python (Pyodide)…');
+    if (this.language === "python") this.onStatus("starting Python (Pyodide)…");
     this.worker = await SupplyFor(this.language).Take(null, this.onStarting);
-    this.onStatus('checking…');
+    this.onStatus("checking…");
     this.started = Date.now();
     return LoadInWorker(this.worker, this.loadRequest);
   }
@@ -186,25 +242,29 @@ class PageRunner {
     // Stop pressed: no case after it runs (each would take a new worker, and an endless
     // function its full time limit).
     if (this.ended || Date.now() - this.started > this.bound) return { stopped: true };
-    if (!this.worker.Alive) {  // the last case ran out of time: a new worker
+    if (!this.worker.Alive) {
+      // the last case ran out of time: a new worker
       this.worker = await SupplyFor(this.language).Take();
       try {
         await LoadInWorker(this.worker, this.loadRequest);
       } catch {
-        return { garbled: 'a new worker for this case could not load your code' };
+        return { garbled: "a new worker for this case could not load your code" };
       }
     }
-    const answer = await this.worker.Request({ op: 'case', request }, this.timeLimit);
-    if (this.ended) return { stopped: true };  // Stop pressed while this case ran
+    const answer = await this.worker.Request({ op: "case", request }, this.timeLimit);
+    if (this.ended) return { stopped: true }; // Stop pressed while this case ran
     if (answer.timeout) return { timeout: true, limit: this.timeLimit };
     delete answer.id;
     return { ...answer, limit: this.timeLimit };
   }
 
   stoppedLine() {
-    if (this.ended) return `stopped after ${Math.round((Date.now() - this.started) / 1000)} s: you pressed Stop`;
-    return CGFS_CHECK.stoppedLine(Math.round((Date.now() - this.started) / 1000), this.totalCases,
-      { timeLimit: this.timeLimit, loadLimit: CGFS_CHECK.LOAD_LIMIT });
+    if (this.ended)
+      return `stopped after ${Math.round((Date.now() - this.started) / 1000)} s: you pressed Stop`;
+    return CGFS_CHECK.stoppedLine(Math.round((Date.now() - this.started) / 1000), this.totalCases, {
+      timeLimit: this.timeLimit,
+      loadLimit: CGFS_CHECK.LOAD_LIMIT,
+    });
   }
 
   // Stop: the case running ends with its worker, and no other runs.
@@ -216,17 +276,29 @@ class PageRunner {
 
 // A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },
 // or { problem } (one line), or { cancelled } when `cancel` was called first.
-async function DrawWithCode({ language, code, file, functions, names, recipe, kinds, seconds, onProgress, onStatus,
-  onPreview = () => {}, onStarting = () => {} }) {
-  if (language === 'python') onStatus('starting Python (Pyodide)…');
+async function DrawWithCode({
+  language,
+  code,
+  file,
+  functions,
+  names,
+  recipe,
+  kinds,
+  seconds,
+  onProgress,
+  onStatus,
+  onPreview = () => {},
+  onStarting = () => {},
+}) {
+  if (language === "python") onStatus("starting Python (Pyodide)…");
   const worker = await SupplyFor(language).Take(onProgress, onStarting);
   worker.onPreview = onPreview;
   DrawWithCode.current = worker;
   try {
-    onStatus('loading your code…');
+    onStatus("loading your code…");
     await LoadInWorker(worker, { code, file, functions, names });
-    onStatus('drawing…');
-    const answer = await worker.Request({ op: 'draw', recipe, kinds }, seconds);
+    onStatus("drawing…");
+    const answer = await worker.Request({ op: "draw", recipe, kinds }, seconds);
     if (answer.timeout) return { problem: `still drawing after ${seconds} s` };
     return answer;
   } catch (error) {

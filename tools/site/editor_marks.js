@@ -3,9 +3,9 @@
 // report; a syntax error's ✗ on its line, the line tinted. Marks of a check made before
 // the code last changed are dimmed. And which of the chapter's functions the cursor is
 // in, for "check this function".
-'use strict';
+"use strict";
 
-const kMarksGutter = 'code-marks';
+const kMarksGutter = "code-marks";
 
 class EditorMarks {
   // onShow(name): a click on a function's mark.
@@ -13,24 +13,25 @@ class EditorMarks {
     this.editor = editor;
     this.onShow = onShow;
     this.errorLine = null;
-    this.editor.on('change', () => this.Stale());
+    this.editor.on("change", () => this.Stale());
   }
 
   Clear() {
     this.editor.clearGutter(kMarksGutter);
-    if (this.errorLine !== null) this.editor.removeLineClass(this.errorLine, 'background', 'code-error-line');
+    if (this.errorLine !== null)
+      this.editor.removeLineClass(this.errorLine, "background", "code-error-line");
     this.errorLine = null;
-    this.editor.getWrapperElement().dataset.marks = '';
+    this.editor.getWrapperElement().dataset.marks = "";
   }
 
   Mark(line, passed, title, onClick) {
-    const mark = document.createElement('button');
-    mark.type = 'button';
-    mark.className = `code-mark ${passed ? 'pass' : 'fail'}`;
-    mark.textContent = passed ? '✓' : '✗';
+    const mark = document.createElement("button");
+    mark.type = "button";
+    mark.className = `code-mark ${passed ? "pass" : "fail"}`;
+    mark.textContent = passed ? "✓" : "✗";
     mark.title = title;
-    mark.setAttribute('aria-label', title);
-    if (onClick) mark.addEventListener('click', onClick);
+    mark.setAttribute("aria-label", title);
+    if (onClick) mark.addEventListener("click", onClick);
     this.editor.setGutterMarker(line, kMarksGutter, mark);
   }
 
@@ -47,31 +48,38 @@ class EditorMarks {
     const shown = [];
     for (const [name, statuses] of byFunction) {
       const line = CGFS_CHECK.definitionLine(code, name, language);
-      const ran = statuses.filter((status) => status !== 'not written' && status !== 'not checked');
+      const ran = statuses.filter((status) => status !== "not written" && status !== "not checked");
       if (line < 0 || ran.length === 0) continue;
-      const failed = ran.filter((status) => status !== 'pass').length;
-      this.Mark(line, failed === 0, failed === 0 ? `${name}: every case passed (${ran.length})`
-        : `${name}: ${failed} of ${ran.length} cases failed: click to see them in the report`,
-      failed === 0 ? null : () => this.onShow(name));
-      shown.push(`${name}:${failed === 0 ? 'pass' : 'fail'}`);
+      const failed = ran.filter((status) => status !== "pass").length;
+      this.Mark(
+        line,
+        failed === 0,
+        failed === 0
+          ? `${name}: every case passed (${ran.length})`
+          : `${name}: ${failed} of ${ran.length} cases failed: click to see them in the report`,
+        failed === 0 ? null : () => this.onShow(name),
+      );
+      shown.push(`${name}:${failed === 0 ? "pass" : "fail"}`);
     }
-    this.editor.getWrapperElement().dataset.marks = shown.join(' ');
+    this.editor.getWrapperElement().dataset.marks = shown.join(" ");
   }
 
   // A message that names a line of the file (`(at FILE:LINE)`): a ✗ there, the line tinted.
   ShowError(message, file) {
     this.Clear();
-    const found = new RegExp(`\\(at ${file.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}:(\\d+)\\)`).exec(message);
+    const found = new RegExp(`\\(at ${file.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")}:(\\d+)\\)`).exec(
+      message,
+    );
     if (!found) return;
     const line = Math.min(Number(found[1]), this.editor.lineCount()) - 1;
-    this.Mark(line, false, message.split('\n')[0]);
-    this.errorLine = this.editor.addLineClass(line, 'background', 'code-error-line');
+    this.Mark(line, false, message.split("\n")[0]);
+    this.errorLine = this.editor.addLineClass(line, "background", "code-error-line");
     this.editor.getWrapperElement().dataset.marks = `line ${line + 1}:error`;
   }
 
   Stale() {
-    for (const mark of this.editor.getWrapperElement().querySelectorAll('.code-mark:not(.stale)')) {
-      mark.classList.add('stale');
+    for (const mark of this.editor.getWrapperElement().querySelectorAll(".code-mark:not(.stale)")) {
+      mark.classList.add("stale");
       mark.title = `before your last change: ${mark.title}`;
     }
   }

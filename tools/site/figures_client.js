@@ -3,18 +3,18 @@
 // (vendor/sources.js), as a Blob, which a page opened from a file may start (a worker
 // from a file of its own it may not). One request at a time; a draw can be stopped by
 // ending the worker (Restart), which makes a new one.
-'use strict';
+"use strict";
 
 class FiguresWorker {
   // moduleName: the chapter module's factory (Chapter02); figuresSource: figures.js's
   // text; onProgress(fraction): a long draw's progress.
   constructor(moduleName, figuresSource, onProgress = () => {}) {
     const code = `var CGFS_MODULE = ${JSON.stringify(moduleName)};\n${figuresSource}\n${CGFS_SOURCES.figuresWorker}`;
-    this.url = URL.createObjectURL(new Blob([code], { type: 'text/javascript' }));
+    this.url = URL.createObjectURL(new Blob([code], { type: "text/javascript" }));
     this.onProgress = onProgress;
     this.next = 1;
     this.pending = new Map();
-    this.configuration = null;  // the options message the figures are made with, if any
+    this.configuration = null; // the options message the figures are made with, if any
     this.Start();
   }
 
@@ -24,7 +24,7 @@ class FiguresWorker {
     // (its answer, id 0, is no one's).
     if (this.configuration) this.worker.postMessage({ ...this.configuration, id: 0 });
     this.worker.onmessage = ({ data }) => {
-      if ('progress' in data) {
+      if ("progress" in data) {
         this.onProgress(data.progress);
         return;
       }
@@ -33,7 +33,8 @@ class FiguresWorker {
       if (resolve) resolve(data);
     };
     this.worker.onerror = (event) => {
-      for (const resolve of this.pending.values()) resolve({ problem: event.message || 'the chapter\'s code failed' });
+      for (const resolve of this.pending.values())
+        resolve({ problem: event.message || "the chapter's code failed" });
       this.pending.clear();
     };
   }
@@ -55,7 +56,9 @@ class FiguresWorker {
   }
 
   // Whether a request is being answered.
-  get Busy() { return this.pending.size > 0; }
+  get Busy() {
+    return this.pending.size > 0;
+  }
 
   // Ends what the worker is doing (its requests answer { cancelled: true }) and starts
   // a new one.

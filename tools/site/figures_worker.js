@@ -22,10 +22,10 @@
 //                            the program would print (its warnings, or why not) and
 //                            the figures, as describe gives them
 // A page that wants a draw stopped ends the worker and makes a new one.
-'use strict';
+"use strict";
 
 let lastProgress = 0;
-let said = null;  // what the chapter's code prints on its standard error, while heard
+let said = null; // what the chapter's code prints on its standard error, while heard
 const chapter = self[self.CGFS_MODULE]({
   printErr(line) {
     if (said) said.push(line);
@@ -41,7 +41,9 @@ const chapter = self[self.CGFS_MODULE]({
   },
 });
 
-function Text(module, pointer) { return module.UTF8ToString(pointer); }
+function Text(module, pointer) {
+  return module.UTF8ToString(pointer);
+}
 
 function SetView(module, view) {
   if (view === undefined) return true;
@@ -67,12 +69,16 @@ const kMaxPixels = 4096 * 4096;
 // Alpha is dropped, as the native readers drop it (the canvas keeps colours multiplied
 // by alpha, so a half-transparent texel may differ from libpng's by one).
 async function ForTheChapter(bytes) {
-  const png = [0x89, 0x50, 0x4e, 0x47], jpeg = [0xff, 0xd8, 0xff];
+  const png = [0x89, 0x50, 0x4e, 0x47],
+    jpeg = [0xff, 0xd8, 0xff];
   const starts = (magic) => magic.every((byte, i) => bytes[i] === byte);
   if (!starts(png) && !starts(jpeg)) return bytes;
   let bitmap;
   try {
-    bitmap = await createImageBitmap(new Blob([bytes]), { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
+    bitmap = await createImageBitmap(new Blob([bytes]), {
+      colorSpaceConversion: "none",
+      premultiplyAlpha: "none",
+    });
   } catch {
     return bytes;
   }
@@ -80,7 +86,7 @@ async function ForTheChapter(bytes) {
   const header = new TextEncoder().encode(`P6\n${width} ${height}\n255\n`);
   if (width * height > kMaxPixels) return header;
   const canvas = new OffscreenCanvas(width, height);
-  const context = canvas.getContext('2d');
+  const context = canvas.getContext("2d");
   context.drawImage(bitmap, 0, 0);
   const rgba = context.getImageData(0, 0, width, height).data;
   const ppm = new Uint8Array(header.length + width * height * 3);
@@ -95,28 +101,41 @@ async function ForTheChapter(bytes) {
 
 // The folder the reader's files are put in, the working folder of the chapter's code:
 // its messages name them as a program run in their folder would.
-const kFolder = '/reader';
+const kFolder = "/reader";
 
 const operations = {
   describe(module) {
     const figures = [];
     for (let i = 0; i < module._FigureCount(); ++i) {
-      figures.push({ name: Text(module, module._FigureName(i)), caption: Text(module, module._FigureCaption(i)),
-        hasCamera: module._FigureHasCamera(i) === 1, costPartner: module._FigureCostPartner(i),
-        hasCostView: module._FigureHasCostView(i) === 1 });
+      figures.push({
+        name: Text(module, module._FigureName(i)),
+        caption: Text(module, module._FigureCaption(i)),
+        hasCamera: module._FigureHasCamera(i) === 1,
+        costPartner: module._FigureCostPartner(i),
+        hasCostView: module._FigureHasCostView(i) === 1,
+      });
     }
-    return { figures, settle: module._SettleMilliseconds(), view: Text(module, module._ViewText()) };
+    return {
+      figures,
+      settle: module._SettleMilliseconds(),
+      view: Text(module, module._ViewText()),
+    };
   },
 
   draw(module, { index, width, height, full, view }) {
     if (!SetView(module, view)) return { problem: Text(module, module._LastError()) };
-    const [w, h] = full ? [width, height] : [module._PreviewSide(width), module._PreviewSide(height)];
+    const [w, h] = full
+      ? [width, height]
+      : [module._PreviewSide(width), module._PreviewSide(height)];
     const start = performance.now();
     if (!module._DrawFigure(index, w, h)) return { problem: Text(module, module._LastError()) };
     const milliseconds = performance.now() - start;
     const pixels = Pixels(module, w * h * 4);
     const measured = Text(module, module._FigureMeasured(index));
-    return { answer: { pixels, width: w, height: h, milliseconds, measured }, transfer: [pixels.buffer] };
+    return {
+      answer: { pixels, width: w, height: h, milliseconds, measured },
+      transfer: [pixels.buffer],
+    };
   },
 
   camera(module, { view, key, drag, reset, set }) {
@@ -139,12 +158,23 @@ const operations = {
     module._free(at);
     if (verdict < 0) return { problem: Text(module, module._LastError()) };
     const difference = Pixels(module, bytes);
-    return { answer: { passed: verdict === 1, text: Text(module, module._ComparisonText()), difference,
-      colours: Text(module, module._DifferenceColours()).trim().split('\n').map((line) => {
-        const [, rgb, name, meaning] = /^(\S+) ([^:]+): (.*)$/.exec(line);
-        return { rgb: `rgb(${rgb})`, name, meaning };
-      }), column: module._DifferingColumn(), row: module._DifferingRow() },
-    transfer: [difference.buffer] };
+    return {
+      answer: {
+        passed: verdict === 1,
+        text: Text(module, module._ComparisonText()),
+        difference,
+        colours: Text(module, module._DifferenceColours())
+          .trim()
+          .split("\n")
+          .map((line) => {
+            const [, rgb, name, meaning] = /^(\S+) ([^:]+): (.*)$/.exec(line);
+            return { rgb: `rgb(${rgb})`, name, meaning };
+          }),
+        column: module._DifferingColumn(),
+        row: module._DifferingRow(),
+      },
+      transfer: [difference.buffer],
+    };
   },
 };
 
@@ -152,18 +182,18 @@ operations.options = async (module, { files = [], words = [] }) => {
   const { FS } = module;
   if (!FS.analyzePath(kFolder).exists) FS.mkdir(kFolder);
   for (const name of FS.readdir(kFolder)) {
-    if (name !== '.' && name !== '..') FS.unlink(`${kFolder}/${name}`);
+    if (name !== "." && name !== "..") FS.unlink(`${kFolder}/${name}`);
   }
   FS.chdir(kFolder);
   for (const { name, bytes } of files) {
     // A name is a word of the command line (one to a line) and a file of one folder.
-    if (name === '' || name === '.' || name === '..' || /[/\n]/.test(name)) {
+    if (name === "" || name === "." || name === ".." || /[/\n]/.test(name)) {
       return { problem: `${JSON.stringify(name)} cannot be a file's name here` };
     }
     FS.writeFile(`${kFolder}/${name}`, await ForTheChapter(new Uint8Array(bytes)));
   }
   said = [];
-  const text = module.allocateUTF8(words.join('\n'));
+  const text = module.allocateUTF8(words.join("\n"));
   const status = module._UseOptions(text);
   module._free(text);
   const lines = said;

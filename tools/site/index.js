@@ -4,7 +4,7 @@
 // figure's own size, since the rasterizer chapters draw in canvas pixels, then shrunk;
 // one chapter after the other. Under each, how the reader's own code of the chapter
 // fared in its last check on the chapter's page, where there was one.
-'use strict';
+"use strict";
 
 // Shrinks RGBA pixels by a whole factor, each small pixel the darkest of the block
 // it covers, channel by channel: a line one pixel wide stays as dark as it was
@@ -27,17 +27,20 @@ function Shrink(pixels, width, height, factor) {
 async function DrawThumbnail(canvas) {
   const worker = new FiguresWorker(canvas.dataset.module, CGFS_FIGURES_OF[canvas.dataset.chapter]);
   try {
-    const { figures, problem } = await worker.Request({ op: 'describe' });
+    const { figures, problem } = await worker.Request({ op: "describe" });
     if (problem) throw new Error(problem);
-    const index = Math.max(0, figures.findIndex((figure) => figure.name === canvas.dataset.opening));
+    const index = Math.max(
+      0,
+      figures.findIndex((figure) => figure.name === canvas.dataset.opening),
+    );
     const name = figures[index].name;
-    const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600];  // its golden image's
-    const frame = await worker.Request({ op: 'draw', index, width, height, full: true });
+    const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600]; // its golden image's
+    const frame = await worker.Request({ op: "draw", index, width, height, full: true });
     if (frame.problem) throw new Error(frame.problem);
     const small = Shrink(frame.pixels, width, height, Math.ceil(width / canvas.width));
     canvas.width = small.width;
     canvas.height = small.height;
-    canvas.getContext('2d').putImageData(small, 0, 0);
+    canvas.getContext("2d").putImageData(small, 0, 0);
     canvas.title = name;
   } catch (error) {
     canvas.title = String(error.message ?? error);
@@ -47,30 +50,37 @@ async function DrawThumbnail(canvas) {
 }
 
 async function DrawThumbnails() {
-  for (const canvas of document.querySelectorAll('canvas.thumbnail')) await DrawThumbnail(canvas);
-  document.body.dataset.thumbnails = 'drawn';
+  for (const canvas of document.querySelectorAll("canvas.thumbnail")) await DrawThumbnail(canvas);
+  document.body.dataset.thumbnails = "drawn";
 }
 
 // Under each chapter's picture, how the reader's own code of it fared in its last full
 // check on the chapter's page (yourcode.js keeps it in this browser's storage).
 function ShowProgress() {
-  for (const canvas of document.querySelectorAll('canvas.thumbnail')) {
+  for (const canvas of document.querySelectorAll("canvas.thumbnail")) {
     let kept = null;
     try {
       kept = JSON.parse(localStorage.getItem(`cgfs-progress:${canvas.dataset.chapter}`));
     } catch {
       // storage refused, or not what yourcode.js keeps: nothing to show
     }
-    if (!kept || !Array.isArray(kept.passed) || !Array.isArray(kept.failed) || !Array.isArray(kept.unwritten)) continue;
+    if (
+      !kept ||
+      !Array.isArray(kept.passed) ||
+      !Array.isArray(kept.failed) ||
+      !Array.isArray(kept.unwritten)
+    )
+      continue;
     const total = kept.passed.length + kept.failed.length + kept.unwritten.length;
-    const line = document.createElement('p');
-    line.className = 'progress';
-    line.dataset.done = kept.passed.length === total ? 'yes' : 'no';
-    line.textContent = `yours (${kept.language === 'python' ? 'Python' : 'JavaScript'}): ` +
-      `${kept.passed.length === total ? '✓ ' : ''}${kept.passed.length} of ${total} functions pass` +
-      (kept.failed.length ? `; to fix: ${kept.failed.join(', ')}` : '') +
-      (kept.unwritten.length ? `; to write: ${kept.unwritten.join(', ')}` : '');
-    canvas.closest('td').append(line);
+    const line = document.createElement("p");
+    line.className = "progress";
+    line.dataset.done = kept.passed.length === total ? "yes" : "no";
+    line.textContent =
+      `yours (${kept.language === "python" ? "Python" : "JavaScript"}): ` +
+      `${kept.passed.length === total ? "✓ " : ""}${kept.passed.length} of ${total} functions pass` +
+      (kept.failed.length ? `; to fix: ${kept.failed.join(", ")}` : "") +
+      (kept.unwritten.length ? `; to write: ${kept.unwritten.join(", ")}` : "");
+    canvas.closest("td").append(line);
   }
 }
 

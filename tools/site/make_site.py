@@ -37,10 +37,18 @@ CHECKER = SITE_FILES.parent / "check-functions"
 CODEMIRROR = Path("/usr/share/javascript/codemirror")
 NODE_MODULES = "/usr/share/nodejs"  # Debian's acorn and acorn-globals, which esbuild bundles
 # The files the site takes from Debian's CodeMirror 5 and from npm's Pyodide.
-CODEMIRROR_FILES = ["lib/codemirror.js", "lib/codemirror.css", "mode/javascript/javascript.js", "mode/python/python.js"]
+CODEMIRROR_FILES = [
+    "lib/codemirror.js",
+    "lib/codemirror.css",
+    "mode/javascript/javascript.js",
+    "mode/python/python.js",
+]
 # Pyodide's two ES modules become scripts (a page opened from a file may start a classic
 # worker from a Blob, not a module worker), each under a global name.
-PYODIDE_SCRIPTS = {"loader": ("pyodide.mjs", "CGFS_PYODIDE_LOADER"), "asm": ("pyodide.asm.mjs", "CGFS_PYODIDE_ASM")}
+PYODIDE_SCRIPTS = {
+    "loader": ("pyodide.mjs", "CGFS_PYODIDE_LOADER"),
+    "asm": ("pyodide.asm.mjs", "CGFS_PYODIDE_ASM"),
+}
 PYODIDE_BYTES = {"wasm": "pyodide.asm.wasm", "stdlib": "python_stdlib.zip"}
 IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".svg"}
 LARGEST_TEXT_FILE = 1 << 20  # a linked text file larger than this is not made a page
@@ -58,18 +66,40 @@ OPENING_FIGURES = {"16-business-card": "business-card-1-sample"}
 # (scripts/setup --deep) when they are on the machine.
 ASSIMP_MODELS = "/usr/share/assimp/models/OBJ"
 SITE_MODELS = {
-    "house": ("tests/models", ["house.obj", "house.mtl", "house-bricks.ppm"],
-              "this project's test model"),
-    "spider": (ASSIMP_MODELS, ["spider.obj", "spider.mtl", "SpiderTex.jpg", "drkwood2.jpg", "engineflare1.jpg",
-                               "wal67ar_small.jpg", "wal69ar_small.jpg"], "assimp's test models"),
+    "house": (
+        "tests/models",
+        ["house.obj", "house.mtl", "house-bricks.ppm"],
+        "this project's test model",
+    ),
+    "spider": (
+        ASSIMP_MODELS,
+        [
+            "spider.obj",
+            "spider.mtl",
+            "SpiderTex.jpg",
+            "drkwood2.jpg",
+            "engineflare1.jpg",
+            "wal67ar_small.jpg",
+            "wal69ar_small.jpg",
+        ],
+        "assimp's test models",
+    ),
     "WusonOBJ": (ASSIMP_MODELS, ["WusonOBJ.obj"], "assimp's test models"),
 }
 
 
 # The scripts of a chapter page's "Your code" panel, in order.
-YOUR_CODE_SCRIPTS = ["vendor/codemirror/codemirror.js", "vendor/codemirror/javascript.js",
-                     "vendor/codemirror/python.js", "vendor/check.js", "vendor/cases.js", "code_runner.js",
-                     "compare_view.js", "editor_marks.js", "yourcode.js"]
+YOUR_CODE_SCRIPTS = [
+    "vendor/codemirror/codemirror.js",
+    "vendor/codemirror/javascript.js",
+    "vendor/codemirror/python.js",
+    "vendor/check.js",
+    "vendor/cases.js",
+    "code_runner.js",
+    "compare_view.js",
+    "editor_marks.js",
+    "yourcode.js",
+]
 
 
 class SiteError(Exception):
@@ -80,8 +110,12 @@ def bundled(entry, *options):
     """An ES module and what it imports, as one script (esbuild, Debian's): the
     checker's core for the pages, the JavaScript runner's worker with acorn; with
     --bundle=false, one module alone made a script (Pyodide's)."""
-    result = subprocess.run(["esbuild", str(entry), "--bundle", "--format=iife", "--log-level=error", *options],
-                            capture_output=True, text=True, env={**os.environ, "NODE_PATH": NODE_MODULES})
+    result = subprocess.run(
+        ["esbuild", str(entry), "--bundle", "--format=iife", "--log-level=error", *options],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "NODE_PATH": NODE_MODULES},
+    )
     if result.returncode != 0:
         raise SiteError(f"esbuild could not bundle {entry}: {result.stderr.strip()}")
     return result.stdout
@@ -95,7 +129,9 @@ class SiteFolder:
     def __init__(self, out):
         self.out = Path(os.path.abspath(out))
         if self.out.is_symlink() or (self.out.exists() and not self.out.is_dir()):
-            raise SiteError(f"{out} is not a folder of its own (a file, or a link); remove it or choose another")
+            raise SiteError(
+                f"{out} is not a folder of its own (a file, or a link); remove it or choose another"
+            )
         self.out.parent.mkdir(parents=True, exist_ok=True)
         self.root = Path(tempfile.mkdtemp(dir=self.out.parent, prefix=f".{self.out.name}-new-"))
 
@@ -162,18 +198,27 @@ class Site:
         self.repo = Path(repo).resolve()
         self.web_build = Path(web_build)
         self.pyodide = Path(pyodide)
-        self.cases = {p.stem: json.loads(p.read_text()) for p in sorted((self.repo / "tests" / "cases").glob("*.json"))}
+        self.cases = {
+            p.stem: json.loads(p.read_text())
+            for p in sorted((self.repo / "tests" / "cases").glob("*.json"))
+        }
         self.controls = json.loads((SITE_FILES / "controls.json").read_text())["chapters"]
         # The chapters whose figures a reader's functions draw (yourcode.js's Draw).
         self.drawn_by_readers = json.loads((SITE_FILES / "drawings.json").read_text())["figures"]
         self.folder = SiteFolder(out)
-        self.chapters = sorted(p.name for p in (self.repo / "chapters").iterdir()
-                               if re.match(r"\d\d-", p.name) and p.is_dir())
+        self.chapters = sorted(
+            p.name
+            for p in (self.repo / "chapters").iterdir()
+            if re.match(r"\d\d-", p.name) and p.is_dir()
+        )
         self.pending = []  # repository paths linked to and not made yet
         self.made = {f"chapters/{chapter}/README.md" for chapter in self.chapters}  # or to be made
         # The site's models: those whose files are all on this machine.
-        self.models = {name: about for name, (folder, files, about) in SITE_MODELS.items()
-                       if all((self.repo / folder / file).is_file() for file in files)}
+        self.models = {
+            name: about
+            for name, (folder, files, about) in SITE_MODELS.items()
+            if all((self.repo / folder / file).is_file() for file in files)
+        }
 
     # Where a file of the repository is in the site.
     def site_path(self, repo_path):
@@ -211,7 +256,9 @@ class Site:
             path, _, anchor = target.partition("#")
             resolved = os.path.normpath((folder / path).as_posix())
             if resolved.startswith("..") or not (self.repo / resolved).exists():
-                raise SiteError(f"{markdown_path} links to {target}, which the repository does not have")
+                raise SiteError(
+                    f"{markdown_path} links to {target}, which the repository does not have"
+                )
             new = self.link(site_page, resolved) + (f"#{anchor}" if anchor else "")
             return f'{attribute}="{html.escape(new)}"'
 
@@ -219,16 +266,25 @@ class Site:
 
     def markdown(self, repo_path, site_page):
         text = (self.repo / repo_path).read_text()
-        rendered = subprocess.run(["cmark-gfm", "-e", "table", "-e", "autolink", "-e", "strikethrough"],
-                                  input=text, capture_output=True, text=True, check=True).stdout
+        rendered = subprocess.run(
+            ["cmark-gfm", "-e", "table", "-e", "autolink", "-e", "strikethrough"],
+            input=text,
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
         return self.rewrite_links(add_heading_ids(rendered), repo_path, site_page)
 
     def page(self, site_page, title, body, scripts=(), styles=()):
         css = relative_link(site_page, "site.css")
-        more_css = "".join(f'<link rel="stylesheet" href="{relative_link(site_page, s)}">\n' for s in styles)
+        more_css = "".join(
+            f'<link rel="stylesheet" href="{relative_link(site_page, s)}">\n' for s in styles
+        )
         home = relative_link(site_page, "index.html")
         tags = "".join(f'<script src="{relative_link(site_page, s)}"></script>\n' for s in scripts)
-        self.folder.write(site_page, f"""<!doctype html>
+        self.folder.write(
+            site_page,
+            f"""<!doctype html>
 <html lang="en">
 <head>
 <meta charset="utf-8">
@@ -242,7 +298,8 @@ class Site:
 {body}
 {tags}</body>
 </html>
-""")
+""",
+        )
 
     # The pages.
     def chapter_page(self, chapter):
@@ -255,13 +312,20 @@ class Site:
         index = self.chapters.index(chapter)
         around = []
         if index > 0:
-            around.append(f'<a href="../{self.chapters[index - 1]}/index.html">← {self.chapters[index - 1]}</a>')
+            around.append(
+                f'<a href="../{self.chapters[index - 1]}/index.html">← {self.chapters[index - 1]}</a>'
+            )
         if index + 1 < len(self.chapters):
-            around.append(f'<a href="../{self.chapters[index + 1]}/index.html">{self.chapters[index + 1]} →</a>')
+            around.append(
+                f'<a href="../{self.chapters[index + 1]}/index.html">{self.chapters[index + 1]} →</a>'
+            )
         base = self.diff_base(chapter)
         code = [f'<a href="source/index.html">its source files</a>']
-        code.append(f'<a href="diff.html">its diff from {base}</a>' if base
-                    else "no diff: it starts afresh, every file is new")
+        code.append(
+            f'<a href="diff.html">its diff from {base}</a>'
+            if base
+            else "no diff: it starts afresh, every file is new"
+        )
         opening = OPENING_FIGURES.get(chapter, "")
         body = f"""<nav>{" · ".join(around)} · {" · ".join(code)}</nav>
 <main class="chapter">
@@ -311,15 +375,26 @@ byte for byte, as the native program's golden image.</p>
 {self.your_code_panel(chapter, title)}
 </div>
 </main>"""
-        self.folder.write(f"{chapter}/figures-source.js",
-                          "var CGFS_FIGURES_OF = self.CGFS_FIGURES_OF || {};\n"
-                          f"CGFS_FIGURES_OF[{json.dumps(chapter)}] = {json.dumps((self.web_build / f'{chapter}.js').read_text())};\n")
+        self.folder.write(
+            f"{chapter}/figures-source.js",
+            "var CGFS_FIGURES_OF = self.CGFS_FIGURES_OF || {};\n"
+            f"CGFS_FIGURES_OF[{json.dumps(chapter)}] = {json.dumps((self.web_build / f'{chapter}.js').read_text())};\n",
+        )
         has_code = chapter in self.cases
-        self.page(site_page, f"{chapter} — {title}", body,
-                  [f"{chapter}/figures-source.js", "vendor/sources.js", "figures_client.js",
-                   *(["models.js"] if self.takes_models(chapter) else []), "chapter.js",
-                   *(YOUR_CODE_SCRIPTS if has_code else [])],
-                  ["vendor/codemirror/codemirror.css"] if has_code else [])
+        self.page(
+            site_page,
+            f"{chapter} — {title}",
+            body,
+            [
+                f"{chapter}/figures-source.js",
+                "vendor/sources.js",
+                "figures_client.js",
+                *(["models.js"] if self.takes_models(chapter) else []),
+                "chapter.js",
+                *(YOUR_CODE_SCRIPTS if has_code else []),
+            ],
+            ["vendor/codemirror/codemirror.css"] if has_code else [],
+        )
 
     def controls_box(self, chapter):
         """The chapter's parameters as controls (controls.json; chapter.js's Controls), each
@@ -327,9 +402,15 @@ byte for byte, as the native program's golden image.</p>
         the "Your code" panel draws that chapter's figures."""
         if chapter not in self.controls:
             return ""
-        mine = ('<p class="note"><label><input type="checkbox" id="controls-mine"> draw it with my code too '
+        mine = (
+            (
+                '<p class="note"><label><input type="checkbox" id="controls-mine"> draw it with my code too '
                 '(the Your code tab\'s functions)</label></p>\n<div id="controls-yours" hidden><canvas></canvas>'
-                '<p></p></div>') if chapter in self.drawn_by_readers else ""
+                "<p></p></div>"
+            )
+            if chapter in self.drawn_by_readers
+            else ""
+        )
         return f"""<div id="controls" data-controls='{html.escape(json.dumps(self.controls[chapter]), quote=True)}'>
 <p class="controls-title">The chapter's idea, by hand: each value is one of its figures.</p>
 {mine}
@@ -344,8 +425,10 @@ byte for byte, as the native program's golden image.</p>
         """The picker of models.js, on the page of a chapter that takes --model."""
         if not self.takes_models(chapter):
             return ""
-        choices = "".join(f'<option value="{html.escape(name)}">{html.escape(name)} ({html.escape(about)})</option>'
-                          for name, about in self.models.items())
+        choices = "".join(
+            f'<option value="{html.escape(name)}">{html.escape(name)} ({html.escape(about)})</option>'
+            for name, about in self.models.items()
+        )
         return f"""<div id="model">
 <p><label>A model: <select id="model-choice"><option value="">none: the chapter's figures</option>{choices}</select></label>
 · <label>your own: <input type="file" id="model-files" multiple accept=".obj,.mtl,.png,.jpg,.jpeg,.ppm"></label></p>
@@ -361,9 +444,15 @@ are decoded by the browser, the rest as the program does.</p>
         """Each site model's files as a script (models/NAME.js; models.js loads it)."""
         for name in self.models:
             folder, files, _ = SITE_MODELS[name]
-            encoded = {file: base64.b64encode((self.repo / folder / file).read_bytes()).decode() for file in files}
-            self.folder.write(f"models/{name}.js", "var CGFS_MODELS = self.CGFS_MODELS || {};\n"
-                              f"CGFS_MODELS[{json.dumps(name)}] = {json.dumps({'open': files[0], 'files': encoded})};\n")
+            encoded = {
+                file: base64.b64encode((self.repo / folder / file).read_bytes()).decode()
+                for file in files
+            }
+            self.folder.write(
+                f"models/{name}.js",
+                "var CGFS_MODELS = self.CGFS_MODELS || {};\n"
+                f"CGFS_MODELS[{json.dumps(name)}] = {json.dumps({'open': files[0], 'files': encoded})};\n",
+            )
 
     def your_code_panel(self, chapter, title):
         """The "Your code" tab (yourcode.js), for a chapter with cases."""
@@ -440,19 +529,36 @@ aria-label="where yours ends and ours begins"> ours</label>
         return found.group(1) if found else None
 
     def diff_page(self, chapter, base):
-        result = subprocess.run(["diff", "-ruN", f"chapters/{base}", f"chapters/{chapter}"],
-                                cwd=self.repo, capture_output=True, text=True)
+        result = subprocess.run(
+            ["diff", "-ruN", f"chapters/{base}", f"chapters/{chapter}"],
+            cwd=self.repo,
+            capture_output=True,
+            text=True,
+        )
         if result.returncode not in (0, 1):
             raise SiteError(f"diff of {base} and {chapter} failed: {result.stderr.strip()}")
         lines = []
         for line in result.stdout.splitlines():
             if line.startswith(("--- ", "+++ ")):
                 line = line.split("\t")[0]  # without the files' times, which say nothing here
-            kind = ("file" if line.startswith(("diff ", "--- ", "+++ ")) else "hunk" if line.startswith("@@")
-                    else "added" if line.startswith("+") else "removed" if line.startswith("-") else "same")
+            kind = (
+                "file"
+                if line.startswith(("diff ", "--- ", "+++ "))
+                else "hunk"
+                if line.startswith("@@")
+                else "added"
+                if line.startswith("+")
+                else "removed"
+                if line.startswith("-")
+                else "same"
+            )
             lines.append(f'<span class="{kind}">{html.escape(line)}</span>')
-        added = sum(1 for l in result.stdout.splitlines() if l.startswith("+") and not l.startswith("+++"))
-        removed = sum(1 for l in result.stdout.splitlines() if l.startswith("-") and not l.startswith("---"))
+        added = sum(
+            1 for l in result.stdout.splitlines() if l.startswith("+") and not l.startswith("+++")
+        )
+        removed = sum(
+            1 for l in result.stdout.splitlines() if l.startswith("-") and not l.startswith("---")
+        )
         body = f"""<nav><a href="index.html">{chapter}</a>, this chapter · <a href="../{base}/index.html">{base}</a>,
 the chapter it continues · <a href="source/index.html">its source files</a></nav>
 <main class="text">
@@ -464,13 +570,18 @@ the chapter it continues · <a href="source/index.html">its source files</a></na
         self.page(f"{chapter}/diff.html", f"{chapter}: its diff from {base}", body)
 
     def sources_page(self, chapter):
-        files = sorted(p.name for p in (self.repo / "chapters" / chapter).iterdir()
-                       if p.is_file() and p.name != "README.md")
+        files = sorted(
+            p.name
+            for p in (self.repo / "chapters" / chapter).iterdir()
+            if p.is_file() and p.name != "README.md"
+        )
         rows = []
         for name in files:
             link = self.link(f"{chapter}/source/index.html", f"chapters/{chapter}/{name}")
             count = len((self.repo / "chapters" / chapter / name).read_text().splitlines())
-            rows.append(f'<tr><td><a href="{link}"><code>{name}</code></a></td><td>{count}</td></tr>')
+            rows.append(
+                f'<tr><td><a href="{link}"><code>{name}</code></a></td><td>{count}</td></tr>'
+            )
         body = f"""<nav><a href="../index.html">{chapter}</a></nav>
 <main class="text">
 <h1>{chapter}: its files</h1>
@@ -489,11 +600,16 @@ the chapter it continues · <a href="source/index.html">its source files</a></na
             text = data.decode()
         except UnicodeDecodeError:
             raise SiteError(f"{repo_path} is linked to and is not text") from None
-        numbered = "".join(f'<span id="L{n}">{html.escape(line)}</span>'
-                             for n, line in enumerate(text.splitlines(), 1))
+        numbered = "".join(
+            f'<span id="L{n}">{html.escape(line)}</span>'
+            for n, line in enumerate(text.splitlines(), 1)
+        )
         parts = PurePosixPath(repo_path).parts
-        nav = (f'<nav><a href="../index.html">{parts[1]}</a> · <a href="index.html">its files</a></nav>\n'
-               if parts[0] == "chapters" else "")
+        nav = (
+            f'<nav><a href="../index.html">{parts[1]}</a> · <a href="index.html">its files</a></nav>\n'
+            if parts[0] == "chapters"
+            else ""
+        )
         body = f"""{nav}<main class="text">
 <h1><code>{html.escape(repo_path)}</code></h1>
 <pre class="source">{numbered}</pre>
@@ -537,15 +653,23 @@ the chapter it continues · <a href="source/index.html">its source files</a></na
             name = re.search(r"\[`(\d\d-[a-z-]+)`\]", rows[i]).group(1)
             rows[i] = f"| `thumbnail:{name}` | " + rows[i][2:]
         self.link("index.html", "README.md")
-        rendered = subprocess.run(["cmark-gfm", "-e", "table"], input="\n".join(rows) + "\n",
-                                  capture_output=True, text=True, check=True).stdout
+        rendered = subprocess.run(
+            ["cmark-gfm", "-e", "table"],
+            input="\n".join(rows) + "\n",
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
         rendered = self.rewrite_links(rendered, "README.md", "index.html")
-        rendered = re.sub(r"<code>thumbnail:((\d\d)-[a-z-]+)</code>",
-                          lambda m: f'<a href="{m.group(1)}/index.html"><canvas class="thumbnail" '
-                                    f'data-chapter="{m.group(1)}" data-module="Chapter{m.group(2)}" '
-                                    f"data-sizes='{json.dumps(self.figure_sizes(m.group(1)))}' "
-                                    f'data-opening="{OPENING_FIGURES.get(m.group(1), "")}" '
-                                    f'width="150" height="150"></canvas></a>', rendered)
+        rendered = re.sub(
+            r"<code>thumbnail:((\d\d)-[a-z-]+)</code>",
+            lambda m: f'<a href="{m.group(1)}/index.html"><canvas class="thumbnail" '
+            f'data-chapter="{m.group(1)}" data-module="Chapter{m.group(2)}" '
+            f"data-sizes='{json.dumps(self.figure_sizes(m.group(1)))}' "
+            f'data-opening="{OPENING_FIGURES.get(m.group(1), "")}" '
+            f'width="150" height="150"></canvas></a>',
+            rendered,
+        )
         speed = self.markdown_text(speed_table, "index.html") if speed_table else ""
         body = f"""<main class="text index">
 <h1>The chapters, live</h1>
@@ -557,8 +681,13 @@ programs, run the tests and compare your own images with these.</p>
 {rendered}
 {speed}
 </main>"""
-        self.page("index.html", "Computer Graphics from Scratch — a C++ companion", body,
-                  [f"{c}/figures-source.js" for c in self.chapters] + ["vendor/sources.js", "figures_client.js", "index.js"])
+        self.page(
+            "index.html",
+            "Computer Graphics from Scratch — a C++ companion",
+            body,
+            [f"{c}/figures-source.js" for c in self.chapters]
+            + ["vendor/sources.js", "figures_client.js", "index.js"],
+        )
 
     def markdown_text(self, path, site_page):
         return self.markdown(os.path.relpath(path, self.repo), site_page)
@@ -582,26 +711,44 @@ programs, run the tests and compare your own images with these.</p>
         CodeMirror, and Pyodide's files (vendor/pyodide.js, loaded when Python is)."""
         self.folder.write("vendor/check.js", bundled(SITE_FILES / "check_entry.mjs"))
         drawings = json.loads((SITE_FILES / "drawings.json").read_text())["figures"]
-        self.folder.write("vendor/cases.js", f"var CGFS_CASES = {json.dumps(self.cases)};\n"
-                                             f"var CGFS_DRAWINGS = {json.dumps(drawings)};\n")
+        self.folder.write(
+            "vendor/cases.js",
+            f"var CGFS_CASES = {json.dumps(self.cases)};\n"
+            f"var CGFS_DRAWINGS = {json.dumps(drawings)};\n",
+        )
         for name in CODEMIRROR_FILES:
             source = CODEMIRROR / name
             if not source.is_file():
-                raise SiteError(f"no {source}: install the Debian package libjs-codemirror (scripts/setup --site)")
+                raise SiteError(
+                    f"no {source}: install the Debian package libjs-codemirror (scripts/setup --site)"
+                )
             self.folder.write(f"vendor/codemirror/{Path(name).name}", source.read_bytes())
         if not (self.pyodide / "package.json").is_file():
-            raise SiteError(f"no {self.pyodide}/package.json: npm's pyodide is not installed there (scripts/site installs it)")
+            raise SiteError(
+                f"no {self.pyodide}/package.json: npm's pyodide is not installed there (scripts/site installs it)"
+            )
         assets = {"lock": (self.pyodide / "pyodide-lock.json").read_text()}
         for key, (name, global_name) in PYODIDE_SCRIPTS.items():
-            assets[key] = bundled(self.pyodide / name, "--bundle=false", f"--global-name={global_name}",
-                                  f"--define:import.meta.url=\"https://pyodide.invalid/{name}\"")
+            assets[key] = bundled(
+                self.pyodide / name,
+                "--bundle=false",
+                f"--global-name={global_name}",
+                f'--define:import.meta.url="https://pyodide.invalid/{name}"',
+            )
         for key, name in PYODIDE_BYTES.items():
             assets[key] = base64.b64encode((self.pyodide / name).read_bytes()).decode()
         self.folder.write("vendor/pyodide.js", f"var CGFS_PYODIDE = {json.dumps(assets)};\n")
 
     def build(self):
         own_scripts = [name for name in YOUR_CODE_SCRIPTS if not name.startswith("vendor/")]
-        for name in ("chapter.js", "index.js", "figures_client.js", "models.js", "site.css", *own_scripts):
+        for name in (
+            "chapter.js",
+            "index.js",
+            "figures_client.js",
+            "models.js",
+            "site.css",
+            *own_scripts,
+        ):
             self.folder.write(name, (SITE_FILES / name).read_bytes())
         self.model_scripts()
         self.vendor_sources()

@@ -6,18 +6,18 @@
 // NAME.obj` (figures_worker.js's options): read by the same reader as the program's,
 // compiled with it, and drawn by the chapter's own code; what the program would print
 // (its warnings, or the one line that says why not) is shown under the picker.
-'use strict';
+"use strict";
 
 // The largest file the programs read (program/src/model_file.cpp): a larger one is not
 // even read into the page.
 const kMaxModelFileBytes = 128 * 1024 * 1024;
 
-const modelScripts = {};  // a site model's name -> the promise of its files
+const modelScripts = {}; // a site model's name -> the promise of its files
 
 // The site's model `name`: { open: its .obj's name, files: [{ name, bytes }] }.
 function SiteModel(name) {
   modelScripts[name] ??= new Promise((resolve, reject) => {
-    const script = document.createElement('script');
+    const script = document.createElement("script");
     script.src = `../models/${encodeURIComponent(name)}.js`;
     script.onload = () => {
       const model = self.CGFS_MODELS?.[name];
@@ -25,8 +25,10 @@ function SiteModel(name) {
         reject(new Error(`the site has no model "${name}"`));
         return;
       }
-      const files = Object.entries(model.files).map(([file, base64]) =>
-        ({ name: file, bytes: Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)) }));
+      const files = Object.entries(model.files).map(([file, base64]) => ({
+        name: file,
+        bytes: Uint8Array.from(atob(base64), (c) => c.charCodeAt(0)),
+      }));
       resolve({ open: model.open, files });
     };
     script.onerror = () => reject(new Error(`the site has no model "${name}"`));
@@ -40,32 +42,40 @@ function SiteModel(name) {
 async function OwnModel(chosen) {
   const objs = chosen.filter((file) => /\.obj$/i.test(file.name));
   if (objs.length !== 1) {
-    return `Choose one .obj file, with its .mtl and texture files if it has them: ${objs.length} of the ` +
-           `${chosen.length} files chosen are .obj files.`;
+    return (
+      `Choose one .obj file, with its .mtl and texture files if it has them: ${objs.length} of the ` +
+      `${chosen.length} files chosen are .obj files.`
+    );
   }
   const large = chosen.find((file) => file.size > kMaxModelFileBytes);
-  if (large) return `${large.name} is ${Math.round(large.size / 2 ** 20)} MB, more than the 128 MB the programs read.`;
-  const files = await Promise.all(chosen.map(async (file) => ({ name: file.name, bytes: new Uint8Array(await file.arrayBuffer()) })));
+  if (large)
+    return `${large.name} is ${Math.round(large.size / 2 ** 20)} MB, more than the 128 MB the programs read.`;
+  const files = await Promise.all(
+    chosen.map(async (file) => ({
+      name: file.name,
+      bytes: new Uint8Array(await file.arrayBuffer()),
+    })),
+  );
   return { open: objs[0].name, files };
 }
 
 function SayModel(lines) {
-  const said = document.getElementById('model-said');
-  said.textContent = lines.join('\n');
+  const said = document.getElementById("model-said");
+  said.textContent = lines.join("\n");
   said.hidden = lines.length === 0;
 }
 
 // The list's entry for the reader's own model while it is drawn ("your own: NAME", the
 // value '#own'), so that the list names what is drawn; none when `name` is null.
 function ShowOwnChoice(name) {
-  const select = document.getElementById('model-choice');
+  const select = document.getElementById("model-choice");
   let option = select.querySelector('option[value="#own"]');
   if (name === null) {
     option?.remove();
     return;
   }
   if (!option) {
-    option = new Option('', '#own');
+    option = new Option("", "#own");
     select.append(option);
   }
   option.textContent = `your own: ${name}`;
@@ -77,12 +87,15 @@ function ShowOwnChoice(name) {
 async function UseModel(model) {
   StopDrawing();
   SayModel(model ? [`reading ${model.open}…`] : []);
-  const answer = await figuresWorker.Configure({ op: 'options', files: model?.files ?? [],
-    words: model ? ['--model', model.open] : [] });
-  SayModel(answer.problem ? [answer.problem] : answer.lines ?? []);
+  const answer = await figuresWorker.Configure({
+    op: "options",
+    files: model?.files ?? [],
+    words: model ? ["--model", model.open] : [],
+  });
+  SayModel(answer.problem ? [answer.problem] : (answer.lines ?? []));
   if (answer.problem || answer.status !== 0) {
     // The line that says why is brought into view: it is below the picture.
-    document.getElementById('model-said').scrollIntoView({ block: 'nearest' });
+    document.getElementById("model-said").scrollIntoView({ block: "nearest" });
     return null;
   }
   return answer;
@@ -92,15 +105,15 @@ async function UseModel(model) {
 // the new figures listed and the first shown; a refused model leaves the figures, and
 // the list, as they were.
 async function ModelChosen(model, name) {
-  const select = document.getElementById('model-choice');
-  const was = select.querySelector('option[value="#own"]') ? '#own' : siteModel;
+  const select = document.getElementById("model-choice");
+  const was = select.querySelector('option[value="#own"]') ? "#own" : siteModel;
   const described = await UseModel(model);
   if (!described) {
     select.value = was;
     return;
   }
-  ShowOwnChoice(name === '#own' ? model.open : null);
-  siteModel = name === '#own' ? '' : name;
+  ShowOwnChoice(name === "#own" ? model.open : null);
+  siteModel = name === "#own" ? "" : name;
   select.value = name;
   ListFigures(described.figures);
   Select(0);
@@ -109,25 +122,25 @@ async function ModelChosen(model, name) {
 // The picker's controls; and the site's model the address names (?model=NAME), drawn
 // before the page's first figure: its figures, or null for the chapter's own.
 async function ModelsStart() {
-  const select = document.getElementById('model-choice');
-  const input = document.getElementById('model-files');
-  select.addEventListener('change', async () => {
+  const select = document.getElementById("model-choice");
+  const input = document.getElementById("model-files");
+  select.addEventListener("change", async () => {
     try {
       await ModelChosen(select.value ? await SiteModel(select.value) : null, select.value);
     } catch (error) {
       SayModel([error.message]);
-      select.value = select.querySelector('option[value="#own"]') ? '#own' : siteModel;
+      select.value = select.querySelector('option[value="#own"]') ? "#own" : siteModel;
     }
   });
-  input.addEventListener('change', async () => {
+  input.addEventListener("change", async () => {
     const chosen = Array.from(input.files);
-    input.value = '';
+    input.value = "";
     if (chosen.length === 0) return;
     const model = await OwnModel(chosen);
-    if (typeof model === 'string') SayModel([model]);
-    else await ModelChosen(model, '#own');
+    if (typeof model === "string") SayModel([model]);
+    else await ModelChosen(model, "#own");
   });
-  const asked = new URLSearchParams(location.search).get('model');
+  const asked = new URLSearchParams(location.search).get("model");
   if (!asked) return null;
   try {
     const described = await UseModel(await SiteModel(asked));

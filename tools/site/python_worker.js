@@ -18,7 +18,7 @@
 //                                            { progress } and, for a ray-traced one,
 //                                            { preview }: a quarter-resolution picture
 // The page ends the worker when a case or a draw runs too long.
-'use strict';
+"use strict";
 
 let pyodide = null;
 let runner = null;
@@ -26,21 +26,29 @@ let runner = null;
 // Pyodide's files, answered from what the page sent; nothing else is to be had.
 function OfflineFetch(files) {
   return async (address) => {
-    const name = String(address?.url ?? address).split('/').pop();
+    const name = String(address?.url ?? address)
+      .split("/")
+      .pop();
     if (name in files) {
-      return new Response(files[name], { headers: { 'Content-Type': name.endsWith('.wasm') ? 'application/wasm' : 'application/octet-stream' } });
+      return new Response(files[name], {
+        headers: {
+          "Content-Type": name.endsWith(".wasm") ? "application/wasm" : "application/octet-stream",
+        },
+      });
     }
     throw new TypeError(`${address}: the page's Python has no network`);
   };
 }
 
-const ScriptAddress = (text) => URL.createObjectURL(new Blob([text], { type: 'text/javascript' }));
+const ScriptAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
 
 // Pyodide's runtime (CGFS_PYODIDE_ASM) and loader (CGFS_PYODIDE_LOADER), as scripts.
 function LoadPyodideScripts({ asm, loader }) {
   const load = self.importScripts;
   load.call(self, ScriptAddress(asm));
-  self.importScripts = () => { throw new Error('a classic worker, given its runtime'); };
+  self.importScripts = () => {
+    throw new Error("a classic worker, given its runtime");
+  };
   try {
     load.call(self, ScriptAddress(loader));
   } finally {
@@ -60,39 +68,53 @@ const operations = {
   async init({ assets, runner: runnerText }) {
     const start = performance.now();
     postMessage({ progress: 0.05 });
-    self.fetch = OfflineFetch({ 'pyodide.asm.wasm': Decoded(assets.wasm), 'python_stdlib.zip': Decoded(assets.stdlib) });
+    self.fetch = OfflineFetch({
+      "pyodide.asm.wasm": Decoded(assets.wasm),
+      "python_stdlib.zip": Decoded(assets.stdlib),
+    });
     postMessage({ progress: 0.3 });
     LoadPyodideScripts(assets);
     postMessage({ progress: 0.4 });
     pyodide = await CGFS_PYODIDE_LOADER.loadPyodide({
-      indexURL: 'https://pyodide.invalid/', stdLibURL: 'https://pyodide.invalid/python_stdlib.zip',
-      lockFileContents: assets.lock, createPyodideModule: CGFS_PYODIDE_ASM.default, stdout: () => {}, stderr: () => {},
+      indexURL: "https://pyodide.invalid/",
+      stdLibURL: "https://pyodide.invalid/python_stdlib.zip",
+      lockFileContents: assets.lock,
+      createPyodideModule: CGFS_PYODIDE_ASM.default,
+      stdout: () => {},
+      stderr: () => {},
     });
-    pyodide.FS.mkdirTree('/home/pyodide/runner');
-    pyodide.FS.writeFile('/home/pyodide/runner/python_runner.py', runnerText);
-    pyodide.runPython("import sys\nsys.path.insert(0, '/home/pyodide/runner')\nimport python_runner");
+    pyodide.FS.mkdirTree("/home/pyodide/runner");
+    pyodide.FS.writeFile("/home/pyodide/runner/python_runner.py", runnerText);
+    pyodide.runPython(
+      "import sys\nsys.path.insert(0, '/home/pyodide/runner')\nimport python_runner",
+    );
     postMessage({ progress: 0.9 });
-    runner = pyodide.pyimport('python_runner');
+    runner = pyodide.pyimport("python_runner");
     return { ready: true, milliseconds: performance.now() - start };
   },
   declare({ code }) {
     return { declared: JSON.parse(runner.page_declare(code)) };
   },
   load({ code, file, functions, names }) {
-    return JSON.parse(runner.page_load(code, file, JSON.stringify(functions), JSON.stringify(names)));
+    return JSON.parse(
+      runner.page_load(code, file, JSON.stringify(functions), JSON.stringify(names)),
+    );
   },
   case({ request }) {
     return JSON.parse(runner.page_case(JSON.stringify(request)));
   },
   draw({ recipe, kinds }) {
-    const drawn = runner.page_draw(JSON.stringify(recipe), JSON.stringify(kinds),
+    const drawn = runner.page_draw(
+      JSON.stringify(recipe),
+      JSON.stringify(kinds),
       (fraction) => postMessage({ progress: fraction }),
       (pixels) => {
         const bytes = new Uint8ClampedArray(pixels.toJs());
         pixels.destroy();
         postMessage({ preview: bytes }, [bytes.buffer]);
-      });
-    if (typeof drawn === 'string') return { problem: drawn };
+      },
+    );
+    if (typeof drawn === "string") return { problem: drawn };
     const pixels = new Uint8ClampedArray(drawn.toJs());
     drawn.destroy();
     const { width, height } = recipe.given.canvas;
@@ -106,7 +128,12 @@ onmessage = async ({ data }) => {
   try {
     result = await operations[data.op](data);
   } catch (error) {
-    result = { unreadable: `the page's Python failed: ${String(error?.message ?? error).trim().split('\n').pop()}` };
+    result = {
+      unreadable: `the page's Python failed: ${String(error?.message ?? error)
+        .trim()
+        .split("\n")
+        .pop()}`,
+    };
   }
   const { answer, transfer = [] } = result.answer ? result : { answer: result };
   postMessage({ ...answer, id: data.id }, transfer);

@@ -45,9 +45,7 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
 
 def main(folder, port, check_only):
     try:
-        server = Server(
-            ("127.0.0.1", port), functools.partial(QuietHandler, directory=folder)
-        )
+        server = Server(("127.0.0.1", port), functools.partial(QuietHandler, directory=folder))
     except OSError as error:
         print(
             f"scripts/site: error: cannot serve on 127.0.0.1:{port}: {error.strerror or error} "

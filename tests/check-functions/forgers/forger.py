@@ -35,8 +35,12 @@ def case_files():
             break
         if "HEAD" in files and "objects" in folders:  # a git repository's history
             try:
-                listed = subprocess.run(["git", "--git-dir", top, "log", "--all", "-p"],
-                                        capture_output=True, text=True, timeout=20).stdout
+                listed = subprocess.run(
+                    ["git", "--git-dir", top, "log", "--all", "-p"],
+                    capture_output=True,
+                    text=True,
+                    timeout=20,
+                ).stdout
                 found.append(listed)
             except (OSError, subprocess.SubprocessError):
                 pass
@@ -67,7 +71,10 @@ def answers():
                 continue
             for function in data.get("functions", []) if isinstance(data, dict) else []:
                 for case in function.get("cases", []):
-                    key = json.dumps([function.get("function"), case.get("given"), case.get("args")], sort_keys=True)
+                    key = json.dumps(
+                        [function.get("function"), case.get("given"), case.get("args")],
+                        sort_keys=True,
+                    )
                     table[key] = case.get("expected")
             start = content.find("{", end)
     return table

@@ -15,10 +15,19 @@ export function heldAgainstFile(facts, defined, wanted) {
     if (!declared) continue;
     const told = facts.functions[name];
     if (!told) {
-      facts.functions[name] = { forged: `your file defines ${name}, but the process it ran in said it does not` };
-    } else if (told.parameters && (told.parameters.names.length !== declared.count || told.parameters.required !== declared.required)) {
-      facts.functions[name] = { forged: `the process your code ran in described ${name} otherwise than your file does ` +
-        `(${declared.count} parameters there, ${told.parameters.names.length} in its account)` };
+      facts.functions[name] = {
+        forged: `your file defines ${name}, but the process it ran in said it does not`,
+      };
+    } else if (
+      told.parameters &&
+      (told.parameters.names.length !== declared.count ||
+        told.parameters.required !== declared.required)
+    ) {
+      facts.functions[name] = {
+        forged:
+          `the process your code ran in described ${name} otherwise than your file does ` +
+          `(${declared.count} parameters there, ${told.parameters.names.length} in its account)`,
+      };
     } else {
       told.empty = declared.empty;
     }

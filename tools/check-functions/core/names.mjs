@@ -14,20 +14,41 @@ export const NAMES = {
   Vh: { path: "viewport.height", part: "viewport", dialect: "book" },
   d: { path: "viewport.d", part: "viewport", dialect: "book" },
   scene: { path: "scene", kind: "scene", part: "scene", dialect: "book" },
-  BACKGROUND_COLOR: { path: "scene.background_color", kind: "color", part: "background", dialect: "book" },
+  BACKGROUND_COLOR: {
+    path: "scene.background_color",
+    kind: "color",
+    part: "background",
+    dialect: "book",
+  },
   camera: { path: "camera", kind: "camera", part: "camera", dialect: "book" },
-  depth_buffer: { path: "depth_buffer", kind: "depth_buffer", part: "depth buffer", dialect: "book" },
+  depth_buffer: {
+    path: "depth_buffer",
+    kind: "depth_buffer",
+    part: "depth buffer",
+    dialect: "book",
+  },
   PutPixel: { path: "canvas.PutPixel", kind: "PutPixel", part: "PutPixel", dialect: "book" },
   // The demos' (demos/raytracer-0N.html, demos/raster-NN.html in the book's repository).
   // The book's canvas.PutPixel(x, y, color) and the demos' canvas.width: a canvas object
   // of the chapter's gets the case's size and the checker's PutPixel.
-  canvas: { path: "canvas", kind: "canvas", part: "canvas", parts: ["canvas", "PutPixel"], dialect: "demos" },
+  canvas: {
+    path: "canvas",
+    kind: "canvas",
+    part: "canvas",
+    parts: ["canvas", "PutPixel"],
+    dialect: "demos",
+  },
   viewport_size: { path: "viewport.width", part: "viewport", dialect: "demos", square: true },
   projection_plane_z: { path: "viewport.d", part: "viewport", dialect: "demos" },
   // A case that gives a scene without spheres or lights has none: [] (not the last case's).
   spheres: { path: "scene.spheres", kind: "spheres", part: "spheres", dialect: "demos", empty: [] },
   lights: { path: "scene.lights", kind: "lights", part: "lights", dialect: "demos", empty: [] },
-  background_color: { path: "scene.background_color", kind: "color", part: "background", dialect: "demos" },
+  background_color: {
+    path: "scene.background_color",
+    kind: "color",
+    part: "background",
+    dialect: "demos",
+  },
   camera_position: { path: "camera.position", kind: "vector", part: "camera", dialect: "demos" },
   camera_rotation: { path: "camera.rotation", kind: "rows", part: "camera", dialect: "demos" },
 };
@@ -52,7 +73,11 @@ export function partsGiven(given = {}) {
   const parts = [];
   for (const key of Object.keys(given)) {
     if (key === "scene") {
-      for (const [field, part] of [["spheres", "spheres"], ["lights", "lights"], ["background_color", "background"]]) {
+      for (const [field, part] of [
+        ["spheres", "spheres"],
+        ["lights", "lights"],
+        ["background_color", "background"],
+      ]) {
         if (field in given.scene) parts.push(part);
       }
     } else if (key === "depth_buffer") {
@@ -67,7 +92,7 @@ export function partsGiven(given = {}) {
 // Which parts a name brings.
 export function partsOf(name) {
   const part = NAMES[name]?.part;
-  return NAMES[name]?.parts ?? (part ? COVERS[part] ?? [part] : []);
+  return NAMES[name]?.parts ?? (part ? (COVERS[part] ?? [part]) : []);
 }
 
 // The table's names that bring a part, book's first.

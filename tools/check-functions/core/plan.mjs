@@ -21,7 +21,10 @@ export function sections(chapter, files) {
   const list = [{ chapter, own: true, entries: own.functions, changed: [] }];
   for (const [earlier, names] of Object.entries(own.keeps ?? {})) {
     const entries = files[earlier].functions.filter((entry) => names.includes(entry.function));
-    const changed = Object.entries(own.changes?.[earlier] ?? {}).map(([name, why]) => ({ function: name, why }));
+    const changed = Object.entries(own.changes?.[earlier] ?? {}).map(([name, why]) => ({
+      function: name,
+      why,
+    }));
     list.push({ chapter: earlier, own: false, entries, changed });
   }
   return list;
@@ -45,13 +48,15 @@ export function functionsOf(list) {
 export function signatureFor(entry, parameters) {
   const book = { call: entry.call, where: entry.where, parameters: entry.parameters };
   if (!parameters) return book;
-  const fits = (count) => parameters.required <= count && (count <= parameters.names.length || parameters.more);
+  const fits = (count) =>
+    parameters.required <= count && (count <= parameters.names.length || parameters.more);
   return [book, ...(entry.signatures ?? [])].find((each) => fits(each.parameters.length)) ?? null;
 }
 
 // The cases a signature runs: all the book's; an alternative's those it lists (Listing
 // 3-1's ComputeLighting: the cases where s = -1, matte, makes V and s idle).
 export function casesFor(entry, signature) {
-  return entry.cases.map((kase, index) => ({ kase, number: index + 1 }))
+  return entry.cases
+    .map((kase, index) => ({ kase, number: index + 1 }))
     .filter(({ number }) => !signature.cases || signature.cases.includes(number));
 }

@@ -5,7 +5,15 @@
 
 import { NAMES } from "./names.mjs";
 
-const VECTOR_FIELDS = new Set(["center", "position", "direction", "normal", "translation", "T", "B"]);
+const VECTOR_FIELDS = new Set([
+  "center",
+  "position",
+  "direction",
+  "normal",
+  "translation",
+  "T",
+  "B",
+]);
 
 // Python: vectors as named tuples V(x, y, z) (with .x, as the checker gives them),
 // points P(x, y, h), records as SimpleNamespace R(...) (with .field), other lists as tuples.
@@ -16,14 +24,19 @@ function python(value, kind) {
   if (typeof value === "string") return JSON.stringify(value);
   if (typeof value === "boolean") return value ? "True" : "False";
   if (Array.isArray(value)) {
-    if (kind === "vector" && value.length === 3) return `V(${value.map((each) => python(each)).join(", ")})`;
+    if (kind === "vector" && value.length === 3)
+      return `V(${value.map((each) => python(each)).join(", ")})`;
     if (kind === "point") return `P(${value.map((each) => python(each)).join(", ")})`;
     const items = value.map((each) => python(each, kind === "vectors" ? "vector" : undefined));
-    return kind === "vectors" || value.some((each) => typeof each === "object") ? `[${items.join(", ")}]` : `(${items.join(", ")}${items.length === 1 ? "," : ""})`;
+    return kind === "vectors" || value.some((each) => typeof each === "object")
+      ? `[${items.join(", ")}]`
+      : `(${items.join(", ")}${items.length === 1 ? "," : ""})`;
   }
   if (value && typeof value === "object") {
-    const fields = Object.entries(value).map(([key, each]) =>
-      `${key}=${python(each, VECTOR_FIELDS.has(key) ? "vector" : key === "vertices" ? "vectors" : undefined)}`);
+    const fields = Object.entries(value).map(
+      ([key, each]) =>
+        `${key}=${python(each, VECTOR_FIELDS.has(key) ? "vector" : key === "vertices" ? "vectors" : undefined)}`,
+    );
     return `R(${fields.join(", ")})`;
   }
   return "None";
@@ -34,7 +47,12 @@ function javascript(value) {
   if (value === "-inf") return "-Infinity";
   if (Array.isArray(value)) return `[${value.map(javascript).join(", ")}]`;
   if (value && typeof value === "object") {
-    return `{ ${Object.entries(value).map(([key, each]) => `${/^[A-Za-z_$][\w$]*$/.test(key) ? key : JSON.stringify(key)}: ${javascript(each)}`).join(", ")} }`;
+    return `{ ${Object.entries(value)
+      .map(
+        ([key, each]) =>
+          `${/^[A-Za-z_$][\w$]*$/.test(key) ? key : JSON.stringify(key)}: ${javascript(each)}`,
+      )
+      .join(", ")} }`;
   }
   return JSON.stringify(value);
 }
@@ -44,7 +62,9 @@ function settings(given) {
   const found = [];
   for (const [name, spec] of Object.entries(NAMES)) {
     if (spec.dialect !== "book") continue;
-    const value = spec.path.split(".").reduce((at, key) => (at && typeof at === "object" ? at[key] : undefined), given);
+    const value = spec.path
+      .split(".")
+      .reduce((at, key) => (at && typeof at === "object" ? at[key] : undefined), given);
     if (value !== undefined) found.push([name, value, spec.kind ?? "number"]);
   }
   return found;
@@ -57,20 +77,33 @@ export function readyCall(language, file, signature, kase, drawing) {
   const given = kase.given ?? {};
   const calls = kase.calls ?? [kase.args ?? {}];
   const name = signature.call.split("(")[0];
-  const argumentsOf = (call, format) => signature.parameters.map(([parameter, kind, from]) =>
-    format(from ? from.map((each) => call[each]) : call[parameter], kind));
+  const argumentsOf = (call, format) =>
+    signature.parameters.map(([parameter, kind, from]) =>
+      format(from ? from.map((each) => call[each]) : call[parameter], kind),
+    );
   if (language === "python") {
     const module = file.replace(/\.py$/, "");
     if (!/^[\w.-]+$/.test(module)) return [];
-    const load = /^[A-Za-z_]\w*$/.test(module) ? `import ${module} as m` : `m = __import__(${JSON.stringify(module)})`;
-    const lines = ["from collections import namedtuple; from types import SimpleNamespace as R",
-      'V = namedtuple("V", "x y z"); P = namedtuple("P", "x y h", defaults=(1.0,))', load];
+    const load = /^[A-Za-z_]\w*$/.test(module)
+      ? `import ${module} as m`
+      : `m = __import__(${JSON.stringify(module)})`;
+    const lines = [
+      "from collections import namedtuple; from types import SimpleNamespace as R",
+      'V = namedtuple("V", "x y z"); P = namedtuple("P", "x y h", defaults=(1.0,))',
+      load,
+    ];
     const numbers = [];
     for (const [setting, value, kind] of settings(given)) {
       if (kind === "PutPixel") continue;
       if (kind === "number") numbers.push(`m.${setting} = ${python(value)}`);
-      else if (kind === "depth_buffer") lines.push(`m.depth_buffer = [[0] * ${given.canvas.height} for _ in range(${given.canvas.width})]`);
-      else lines.push(`m.${setting} = ${python(value, kind === "camera" || kind === "scene" ? undefined : kind)}`);
+      else if (kind === "depth_buffer")
+        lines.push(
+          `m.depth_buffer = [[0] * ${given.canvas.height} for _ in range(${given.canvas.width})]`,
+        );
+      else
+        lines.push(
+          `m.${setting} = ${python(value, kind === "camera" || kind === "scene" ? undefined : kind)}`,
+        );
     }
     if (numbers.length) lines.splice(3, 0, numbers.join("; "));
     if (drawing) lines.push("m.PutPixel = lambda x, y, color: print(x, y, color)");
@@ -79,13 +112,19 @@ export function readyCall(language, file, signature, kase, drawing) {
   }
   if (/\.html?$/i.test(file)) return [];
   if (/\.mjs$/.test(file)) {
-    return [`const m = await import("./${file}");`, ...calls.map((call) => `m.${name}(${argumentsOf(call, javascript).join(", ")})`)];
+    return [
+      `const m = await import("./${file}");`,
+      ...calls.map((call) => `m.${name}(${argumentsOf(call, javascript).join(", ")})`),
+    ];
   }
   const lines = [`.load ${file}`];
-  const assignments = settings(given).filter(([, , kind]) => kind !== "PutPixel")
-    .map(([setting, value, kind]) => (kind === "depth_buffer"
-      ? `depth_buffer = Array.from({ length: ${given.canvas.width} }, () => new Array(${given.canvas.height}).fill(0));`
-      : `${setting} = ${javascript(value)};`));
+  const assignments = settings(given)
+    .filter(([, , kind]) => kind !== "PutPixel")
+    .map(([setting, value, kind]) =>
+      kind === "depth_buffer"
+        ? `depth_buffer = Array.from({ length: ${given.canvas.width} }, () => new Array(${given.canvas.height}).fill(0));`
+        : `${setting} = ${javascript(value)};`,
+    );
   if (assignments.length) lines.push(assignments.join(" "));
   if (drawing) lines.push("PutPixel = (x, y, color) => console.log(x, y, color);");
   for (const call of calls) lines.push(`${name}(${argumentsOf(call, javascript).join(", ")})`);

@@ -13,7 +13,10 @@ const PRINTED_LIMIT = 4000;
 function outputOf(each) {
   const parts = [each.status === "pass" ? "passed" : `${each.status}: ${each.message}`];
   if (each.status !== "pass" && each.catches) parts.push(`this case catches: ${each.catches}`);
-  if (each.printed) parts.push(`your code printed${each.printedCut ? " (cut short)" : ""}:\n${each.printed.slice(0, PRINTED_LIMIT)}`);
+  if (each.printed)
+    parts.push(
+      `your code printed${each.printedCut ? " (cut short)" : ""}:\n${each.printed.slice(0, PRINTED_LIMIT)}`,
+    );
   if (each.rerun) parts.push(`alone: ${each.rerun}`);
   return parts.join("\n");
 }
@@ -31,9 +34,17 @@ export function gradescopeResults(result, { chapter, file, language, seconds, re
     output_format: "text",
     tags: [each.function, each.caseFile.replace(/\.json$/, "")],
     extra_data: {
-      function: each.function, case_file: each.caseFile, case: each.case, status: each.status,
-      message: each.message, catches: each.catches, returned: each.returned ?? null, expected: each.expected,
-      printed: each.printed ?? "", printed_by: "the student's code", printed_cut: each.printedCut ?? false,
+      function: each.function,
+      case_file: each.caseFile,
+      case: each.case,
+      status: each.status,
+      message: each.message,
+      catches: each.catches,
+      returned: each.returned ?? null,
+      expected: each.expected,
+      printed: each.printed ?? "",
+      printed_by: "the student's code",
+      printed_cut: each.printedCut ?? false,
       ...(each.rerun ? { rerun: each.rerun } : {}),
     },
   }));
@@ -43,9 +54,17 @@ export function gradescopeResults(result, { chapter, file, language, seconds, re
     output: report,
     output_format: "text",
     extra_data: {
-      chapter, file, language, verdict: result.verdict, notes,
-      counts: Object.fromEntries(["pass", "fail", "error", "timeout", "not written", "not checked"]
-        .map((status) => [status, result.records.filter((each) => each.status === status).length])),
+      chapter,
+      file,
+      language,
+      verdict: result.verdict,
+      notes,
+      counts: Object.fromEntries(
+        ["pass", "fail", "error", "timeout", "not written", "not checked"].map((status) => [
+          status,
+          result.records.filter((each) => each.status === status).length,
+        ]),
+      ),
     },
     tests,
   };

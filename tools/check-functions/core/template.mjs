@@ -10,9 +10,14 @@ function guess(name) {
   const n = name.toLowerCase().replace(/_/g, "");
   const has = (...words) => words.some((word) => n.includes(word));
   if (has("depth")) return null;
-  if (n === "viewport" || n === "canvas") return n;  // an object with the case's fields
-  if ((has("canvas", "screen", "image", "img") && has("width")) || ["cw", "width", "w"].includes(n)) return "canvas.width";
-  if ((has("canvas", "screen", "image", "img") && has("height")) || ["ch", "height", "h"].includes(n)) return "canvas.height";
+  if (n === "viewport" || n === "canvas") return n; // an object with the case's fields
+  if ((has("canvas", "screen", "image", "img") && has("width")) || ["cw", "width", "w"].includes(n))
+    return "canvas.width";
+  if (
+    (has("canvas", "screen", "image", "img") && has("height")) ||
+    ["ch", "height", "h"].includes(n)
+  )
+    return "canvas.height";
   if (has("viewport") && has("size")) return "viewport.size";
   if ((has("viewport") && has("width")) || n === "vw") return "viewport.width";
   if ((has("viewport") && has("height")) || n === "vh") return "viewport.height";
@@ -30,13 +35,15 @@ const PYTHON_VALUES = {
   viewport: 'given["viewport"]',
   "canvas.width": 'given["canvas"]["width"]',
   "canvas.height": 'given["canvas"]["height"]',
-  "viewport.size": 'given["viewport"]["width"]  # square: the cases\' width (a case whose height differs fails)',
+  "viewport.size":
+    'given["viewport"]["width"]  # square: the cases\' width (a case whose height differs fails)',
   "viewport.width": 'given["viewport"]["width"]',
   "viewport.height": 'given["viewport"]["height"]',
   "viewport.d": 'given["viewport"]["d"]',
   "scene.spheres": 'adapter.spheres(given["scene"].get("spheres", []))',
   "scene.lights": 'adapter.lights(given["scene"].get("lights", []))',
-  "scene.background_color": 'adapter.color(given["scene"].get("background_color", [255, 255, 255]))',
+  "scene.background_color":
+    'adapter.color(given["scene"].get("background_color", [255, 255, 255]))',
   "camera.position": 'adapter.vector(given["camera"]["position"])',
   "camera.rotation": 'adapter.rows(given["camera"]["rotation"])',
 };
@@ -45,13 +52,15 @@ const JS_VALUES = {
   viewport: "given.viewport",
   "canvas.width": "given.canvas.width",
   "canvas.height": "given.canvas.height",
-  "viewport.size": "given.viewport.width;  // square: the cases' width (a case whose height differs fails)",
+  "viewport.size":
+    "given.viewport.width;  // square: the cases' width (a case whose height differs fails)",
   "viewport.width": "given.viewport.width",
   "viewport.height": "given.viewport.height",
   "viewport.d": "given.viewport.d",
   "scene.spheres": "adapter.spheres(given.scene.spheres ?? [], adapter)",
   "scene.lights": "adapter.lights(given.scene.lights ?? [], adapter)",
-  "scene.background_color": "adapter.color(given.scene.background_color ?? [255, 255, 255], adapter)",
+  "scene.background_color":
+    "adapter.color(given.scene.background_color ?? [255, 255, 255], adapter)",
   "camera.position": "adapter.vector(given.camera.position, adapter)",
   "camera.rotation": "adapter.rows(given.camera.rotation, adapter)",
 };
@@ -60,7 +69,8 @@ const JS_VALUES = {
 function ownNames(facts) {
   const names = new Set();
   for (const fact of Object.values(facts.functions)) {
-    for (const [name, , kind] of fact.reads ?? []) if (kind === "data" && !(name in NAMES)) names.add(name);
+    for (const [name, , kind] of fact.reads ?? [])
+      if (kind === "data" && !(name in NAMES)) names.add(name);
     for (const { names: bound } of fact.bound ?? []) bound.forEach((name) => names.add(name));
   }
   return [...names].sort();
@@ -75,7 +85,10 @@ function assignments(facts, language) {
   const unknown = [];
   for (const name of ownNames(facts)) {
     const path = guess(name);
-    if (!path) { unknown.push(name); continue; }
+    if (!path) {
+      unknown.push(name);
+      continue;
+    }
     const [part, field] = path.split(".");
     // Every case that gives a scene sets all of it: what it does not give is empty, so
     // that nothing of the case before stays.
@@ -84,19 +97,32 @@ function assignments(facts, language) {
     // A list is filled in place in Python, so that a default argument bound to it sees it.
     const list = python && /^a list/.test(facts.data[name] ?? "");
     const target = list ? `module.${name}[:]` : `module.${name}`;
-    groups.get(key).push(`${target} = ${values[path]}${list ? "  # [:]: the same list, filled in place" : ""}`);
+    groups
+      .get(key)
+      .push(`${target} = ${values[path]}${list ? "  # [:]: the same list, filled in place" : ""}`);
   }
   const lines = [];
   for (const [key, assigned] of groups) {
     const [part, field] = key.split(".");
-    const test = python ? (field ? `"${field}" in given.get("scene", {})` : `"${part}" in given`)
-      : (field ? `given.scene?.${field} !== undefined` : `given.${part}`);
-    lines.push(python ? `    if ${test}:` : `    if (${test}) {`,
-      ...assigned.map((line) => (python ? `        ${line}` : `      ${line}${line.includes(";") ? "" : ";"}`)));
+    const test = python
+      ? field
+        ? `"${field}" in given.get("scene", {})`
+        : `"${part}" in given`
+      : field
+        ? `given.scene?.${field} !== undefined`
+        : `given.${part}`;
+    lines.push(
+      python ? `    if ${test}:` : `    if (${test}) {`,
+      ...assigned.map((line) =>
+        python ? `        ${line}` : `      ${line}${line.includes(";") ? "" : ";"}`,
+      ),
+    );
     if (!python) lines.push("    }");
   }
   for (const name of unknown) {
-    lines.push(`    ${python ? "#" : "//"} your ${name} (${facts.data[name] ?? "read by your functions"}): what does it hold? Set it here if a case gives it.`);
+    lines.push(
+      `    ${python ? "#" : "//"} your ${name} (${facts.data[name] ?? "read by your functions"}): what does it hold? Set it here if a case gives it.`,
+    );
   }
   return lines;
 }
@@ -117,11 +143,19 @@ function typeLines(facts, language) {
   for (const [name, params] of Object.entries(facts?.classes ?? {})) {
     if (params.length !== 3) continue;
     const named = params.join(",");
-    const kind = /col/i.test(name) || named === "r,g,b" ? "color"
-      : /vec|vert|point|v3/i.test(name) || named === "x,y,z" ? "vector" : null;
-    if (!kind || lines.some((line) => line.includes(`${kind}(`) || line.includes(`${kind}:`))) continue;
-    lines.push(python ? `def ${kind}(value):  # your ${name}\n    return ${name}(*value)\n`
-      : `  ${kind}: ([a, b, c]) => new ${name}(a, b, c),  // your ${name}`);
+    const kind =
+      /col/i.test(name) || named === "r,g,b"
+        ? "color"
+        : /vec|vert|point|v3/i.test(name) || named === "x,y,z"
+          ? "vector"
+          : null;
+    if (!kind || lines.some((line) => line.includes(`${kind}(`) || line.includes(`${kind}:`)))
+      continue;
+    lines.push(
+      python
+        ? `def ${kind}(value):  # your ${name}\n    return ${name}(*value)\n`
+        : `  ${kind}: ([a, b, c]) => new ${name}(a, b, c),  // your ${name}`,
+    );
     used.push(name);
   }
   return { lines, used };
@@ -142,32 +176,42 @@ ${GIVEN.map((line) => `      ${line.replace(/given\.(\w+)/g, 'given["$1"]')}`).j
     book's records (fields read as sphere.radius or sphere["radius"]):
     adapter.spheres(...), adapter.lights(...), adapter.color(...), adapter.vector(...);
     make your own types here if your code needs them."""
-${filled ?? `    # For example, a canvas of your own:
+${
+  filled ??
+  `    # For example, a canvas of your own:
     # if "canvas" in given:
     #     module.CANVAS_WIDTH = given["canvas"]["width"]
     #     module.CANVAS_HEIGHT = given["canvas"]["height"]
-    pass`}
+    pass`
+}
 
 
-${types.length ? `# Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n\n")}`
+${
+  types.length
+    ? `# Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n\n")}`
     : `# Your own types, if your functions take them (each gets the case's JSON value):
 # def vector(value):
 #     return MyVector(*value)
 # def sphere(value):
 #     return MySphere(center=value["center"], radius=value["radius"], color=value["color"])
-`}`;
+`
+}`;
 }
 
 function jsTemplate(filled, types = [], esm = null) {
   return `// An adapter for check-functions.js (docs/students.md, "How the book's data reach your
 // code"): give it with --adapter. Export only what your chapter needs; each function here
-// takes the place of the checker's own of the same name.${esm ? `
+// takes the place of the checker's own of the same name.${
+    esm
+      ? `
 // Your chapter is an ES module: save this as an .mjs file beside it.
 ${esm}
-export default {` : `
+export default {`
+      : `
 "use strict";
 
-module.exports = {`}
+module.exports = {`
+  }
   // Called before each case, with your chapter as \`module\` (its exports, or for a plain
   // script its top-level names: module.Cw = 600 sets its Cw) and what the case gives:
 ${GIVEN.map((line) => `  //   ${line}`).join("\n")}
@@ -176,15 +220,21 @@ ${GIVEN.map((line) => `  //   ${line}`).join("\n")}
   // reads them: set the names of your own here. \`adapter\` builds the book's objects
   // (adapter.scene(given.scene, adapter), adapter.vector(...)).
   setup(module, given, adapter) {
-${filled ?? `    // For example, a canvas of your own:
+${
+  filled ??
+  `    // For example, a canvas of your own:
     // if (given.canvas) {
     //   module.canvasWidth = given.canvas.width;
     //   module.canvasHeight = given.canvas.height;
-    // }`}
+    // }`
+}
   },
-${types.length ? `  // Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n")}`
+${
+  types.length
+    ? `  // Your own types, which your functions take (each gets the case's JSON value):\n${types.join("\n")}`
     : `  // Your own types, if your functions take them (each gets the case's JSON value):
-  // vector: ([x, y, z]) => new Vec3(x, y, z),`}
+  // vector: ([x, y, z]) => new Vec3(x, y, z),`
+}
 };
 `;
 }
@@ -197,18 +247,34 @@ export function adapterTemplate(language, facts = null, file = "") {
     let lines = assignments(facts, language);
     if (!python && facts.reachable === "exports" && lines.length) {
       // An ES module's own names cannot be set from outside: through a function it exports.
-      lines = ["    // Your ES module's own names are out of reach from here: export a function that sets",
+      lines = [
+        "    // Your ES module's own names are out of reach from here: export a function that sets",
         "    // them (declared with let), and call it here, chapter.configure(given) say. What each gets:",
-        ...lines.filter((line) => /module\./.test(line)).map((line) => `    //   ${line.trim().replace(/^module\./, "")}`)];
+        ...lines
+          .filter((line) => /module\./.test(line))
+          .map((line) => `    //   ${line.trim().replace(/^module\./, "")}`),
+      ];
     }
-    filled = (lines.length ? lines : [`    ${python ? "#" : "//"} your functions read no names of their own: the checker's defaults reach them`])
-      .join("\n");
+    filled = (
+      lines.length
+        ? lines
+        : [
+            `    ${python ? "#" : "//"} your functions read no names of their own: the checker's defaults reach them`,
+          ]
+    ).join("\n");
     if (python && lines.every((line) => /^\s*#/.test(line))) filled += "\n    pass";
   }
   const { lines: types, used } = typeLines(facts, language);
   const stem = file.replace(/^.*\//, "").replace(/\.[^.]*$/, "");
-  if (python) return pythonTemplate(filled, types, used.length ? `\nfrom ${stem} import ${used.join(", ")}\n` : "");
-  const esm = facts?.reachable === "exports"
-    ? `import ${used.length ? `{ ${used.join(", ")} } ` : "* as chapter "}from "./${file.replace(/^.*\//, "")}";` : null;
+  if (python)
+    return pythonTemplate(
+      filled,
+      types,
+      used.length ? `\nfrom ${stem} import ${used.join(", ")}\n` : "",
+    );
+  const esm =
+    facts?.reachable === "exports"
+      ? `import ${used.length ? `{ ${used.join(", ")} } ` : "* as chapter "}from "./${file.replace(/^.*\//, "")}";`
+      : null;
   return jsTemplate(filled, types, esm);
 }

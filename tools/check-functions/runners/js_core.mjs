@@ -15,13 +15,30 @@ export function useParser(acornModule, findGlobalsFunction) {
   findGlobals = findGlobalsFunction;
 }
 
-export const MAX_ITEMS = 200_000;  // numbers, strings and lists in one answer
-export const MAX_ANSWER = 4 << 20;  // characters of one answer
-const MAX_PIXELS = 100_000;  // PutPixel calls one case may make
+export const MAX_ITEMS = 200_000; // numbers, strings and lists in one answer
+export const MAX_ANSWER = 4 << 20; // characters of one answer
+const MAX_PIXELS = 100_000; // PutPixel calls one case may make
 // The names a chapter finds in its global scope before it runs: not its own.
-const BUILTINS = new Set([...Object.getOwnPropertyNames(globalThis), "require", "module", "exports",
-  "__filename", "__dirname", "undefined", "arguments", "this", "window", "document", "Image",
-  "requestAnimationFrame", "alert", "self", "postMessage", "importScripts", "onmessage"]);
+const BUILTINS = new Set([
+  ...Object.getOwnPropertyNames(globalThis),
+  "require",
+  "module",
+  "exports",
+  "__filename",
+  "__dirname",
+  "undefined",
+  "arguments",
+  "this",
+  "window",
+  "document",
+  "Image",
+  "requestAnimationFrame",
+  "alert",
+  "self",
+  "postMessage",
+  "importScripts",
+  "onmessage",
+]);
 
 export class LoadError extends Error {}
 
@@ -36,20 +53,34 @@ export function nameSource(address, name) {
 // line that names none of `ours`).
 export function oneLine(error, ours = []) {
   for (const [address, name] of sourceNames) {
-    if (error && typeof error === "object" && typeof error.stack === "string") error.stack = error.stack.replaceAll(address, name);
+    if (error && typeof error === "object" && typeof error.stack === "string")
+      error.stack = error.stack.replaceAll(address, name);
   }
   if (!(error instanceof Error) && !(error && typeof error === "object" && "stack" in error)) {
     return `${typeof error} ${String(error).slice(0, 200)}`;
   }
-  const line = String(error.stack ?? "").split("\n").find((each) => /:\d+:\d+\)?$/.test(each) &&
-    !ours.some((dir) => each.includes(dir)) && !each.includes("node:"));
-  const place = line ? ` (at ${line.replace(/^.*\(|^\s*at /g, "").replace(/:\d+\)?$/, "").replace(/^.*\//, "")})` : "";
+  const line = String(error.stack ?? "")
+    .split("\n")
+    .find(
+      (each) =>
+        /:\d+:\d+\)?$/.test(each) &&
+        !ours.some((dir) => each.includes(dir)) &&
+        !each.includes("node:"),
+    );
+  const place = line
+    ? ` (at ${line
+        .replace(/^.*\(|^\s*at /g, "")
+        .replace(/:\d+\)?$/, "")
+        .replace(/^.*\//, "")})`
+    : "";
   return `${error.name}: ${String(error.message).split("\n")[0]}${place}`;
 }
 
 export function syntaxError(error, filename, lineOffset) {
   const line = (error.loc?.line ?? 0) + lineOffset;
-  return new LoadError(`SyntaxError: ${error.message.replace(/ \(\d+:\d+\)$/, "")} (at ${filename.replace(/^.*\//, "")}:${line})`);
+  return new LoadError(
+    `SyntaxError: ${error.message.replace(/ \(\d+:\d+\)$/, "")} (at ${filename.replace(/^.*\//, "")}:${line})`,
+  );
 }
 
 // The top-level declarations of a script or module: name -> { kind, source }, kind one of
@@ -59,24 +90,36 @@ export function declarations(program, code) {
   const declare = (pattern, kind, source) => {
     if (!pattern) return;
     if (pattern.type === "Identifier") found.set(pattern.name, { kind, source });
-    else if (pattern.type === "ObjectPattern") pattern.properties.forEach((p) => declare(p.value ?? p.argument, "data"));
+    else if (pattern.type === "ObjectPattern")
+      pattern.properties.forEach((p) => declare(p.value ?? p.argument, "data"));
     else if (pattern.type === "ArrayPattern") pattern.elements.forEach((p) => declare(p, "data"));
     else if (pattern.type === "AssignmentPattern") declare(pattern.left, kind, source);
     else if (pattern.type === "RestElement") declare(pattern.argument, "data");
   };
   const text = (node) => code.slice(node.start, node.end);
   for (let node of program.body) {
-    if (node.type === "ExportNamedDeclaration" || node.type === "ExportDefaultDeclaration") node = node.declaration ?? node;
+    if (node.type === "ExportNamedDeclaration" || node.type === "ExportDefaultDeclaration")
+      node = node.declaration ?? node;
     if (node.type === "FunctionDeclaration") declare(node.id, "function", text(node));
     else if (node.type === "ClassDeclaration") declare(node.id, "class");
-    else if (node.type === "ImportDeclaration") node.specifiers.forEach((s) => declare(s.local, "import"));
+    else if (node.type === "ImportDeclaration")
+      node.specifiers.forEach((s) => declare(s.local, "import"));
     else if (node.type === "VariableDeclaration") {
       for (const each of node.declarations) {
         const init = each.init;
         const isFunction = init && /^(FunctionExpression|ArrowFunctionExpression)$/.test(init.type);
         const isRequire = init?.type === "CallExpression" || init?.type === "MemberExpression";
-        declare(each.id, isFunction ? "function" : init?.type === "ClassExpression" ? "class" : isRequire ? "import" : "data",
-          isFunction ? text(init) : undefined);
+        declare(
+          each.id,
+          isFunction
+            ? "function"
+            : init?.type === "ClassExpression"
+              ? "class"
+              : isRequire
+                ? "import"
+                : "data",
+          isFunction ? text(init) : undefined,
+        );
       }
     }
   }
@@ -98,7 +141,10 @@ export function declaredFunctions(program) {
     if (node.type === "FunctionDeclaration" && node.id) found.set(node.id.name, describe(node));
     if (node.type !== "VariableDeclaration") continue;
     for (const each of node.declarations) {
-      if (each.id.type === "Identifier" && /^(FunctionExpression|ArrowFunctionExpression)$/.test(each.init?.type)) {
+      if (
+        each.id.type === "Identifier" &&
+        /^(FunctionExpression|ArrowFunctionExpression)$/.test(each.init?.type)
+      ) {
         found.set(each.id.name, describe(each.init));
       }
     }
@@ -126,17 +172,21 @@ export function moduleMadeSettable(program, code) {
   for (let node of program.body) {
     if (node.type === "ExportNamedDeclaration" && node.declaration) node = node.declaration;
     if (node.type !== "VariableDeclaration") continue;
-    for (const each of node.declarations) if (each.id.type === "Identifier") names.push(each.id.name);
+    for (const each of node.declarations)
+      if (each.id.type === "Identifier") names.push(each.id.name);
   }
-  const cases = (body) => names.map((name) => `case ${JSON.stringify(name)}: ${body(name)}`).join(" ");
+  const cases = (body) =>
+    names.map((name) => `case ${JSON.stringify(name)}: ${body(name)}`).join(" ");
   return `${constsMadeLet(program, code)}
 ;export function ${SETTER}(name, value) { switch (name) { ${cases((name) => `${name} = value; return true;`)} } return false; }
 export function ${GETTER}(name) { switch (name) { ${cases((name) => `return ${name};`)} } return undefined; }
 `;
 }
-export const SETTER = "__cgfsSet", GETTER = "__cgfsGet";
+export const SETTER = "__cgfsSet",
+  GETTER = "__cgfsGet";
 
-export const parse = (code, sourceType) => acorn.parse(code, { ecmaVersion: "latest", sourceType, allowHashBang: true });
+export const parse = (code, sourceType) =>
+  acorn.parse(code, { ecmaVersion: "latest", sourceType, allowHashBang: true });
 
 // The chapter as loaded: its kind ("script": plain scripts, CommonJS files, a page's
 // scripts, every top-level name in reach; "module": an ES module, only its exports), its
@@ -157,7 +207,7 @@ export class ChapterBase {
       try {
         return this.evaluate(`typeof ${name} === "undefined" ? undefined : ${name}`);
       } catch {
-        return undefined;  // a \`let\` read before its line ran
+        return undefined; // a \`let\` read before its line ran
       }
     }
     if (this.settable?.has(name)) return this.settable.get(name);
@@ -178,16 +228,25 @@ export class ChapterBase {
   // its exports and top-level names, module.Cw = 600 setting its Cw.
   asModule() {
     if (this.kind === "module" && !this.settable) return this.exports;
-    return new Proxy({}, {
-      get: (_, name) => (typeof name !== "string" ? undefined : name in this.exports ? this.exports[name] : this.value(name)),
-      has: (_, name) => typeof name === "string" && (name in this.exports || this.value(name) !== undefined),
-      set: (_, name, value) => {
-        if (typeof name !== "string") return true;
-        if (/^[A-Za-z_$][\w$]*$/.test(name)) this.assign(name, value);
-        if (name in this.exports) this.exports[name] = value;
-        return true;
+    return new Proxy(
+      {},
+      {
+        get: (_, name) =>
+          typeof name !== "string"
+            ? undefined
+            : name in this.exports
+              ? this.exports[name]
+              : this.value(name),
+        has: (_, name) =>
+          typeof name === "string" && (name in this.exports || this.value(name) !== undefined),
+        set: (_, name, value) => {
+          if (typeof name !== "string") return true;
+          if (/^[A-Za-z_$][\w$]*$/.test(name)) this.assign(name, value);
+          if (name in this.exports) this.exports[name] = value;
+          return true;
+        },
       },
-    });
+    );
   }
 }
 
@@ -210,12 +269,17 @@ function functionNode(source) {
 
 function parametersOf(node) {
   const names = [];
-  let required = 0, optional = false, more = false;
+  let required = 0,
+    optional = false,
+    more = false;
   for (const param of node.params) {
-    if (param.type === "RestElement") { more = true; continue; }
+    if (param.type === "RestElement") {
+      more = true;
+      continue;
+    }
     if (param.type === "AssignmentPattern") optional = true;
     if (!optional) required += 1;
-    names.push(param.type === "Identifier" ? param.name : param.left?.name ?? "…");
+    names.push(param.type === "Identifier" ? param.name : (param.left?.name ?? "…"));
   }
   return { names, required, more };
 }
@@ -233,11 +297,15 @@ function readsOf(chapter, source, names, wanted) {
     if (seen.has(current)) continue;
     seen.add(current);
     const parsed = functionNode(current);
-    if (!parsed) { complete = false; continue; }
+    if (!parsed) {
+      complete = false;
+      continue;
+    }
     for (const { name } of findGlobals(parsed.program)) {
       const declared = chapter.declared.get(name);
       const value = chapter.value(name);
-      if (name in names) {  // the checker sets it: read, never followed
+      if (name in names) {
+        // the checker sets it: read, never followed
         reads.set(name, value === undefined ? "missing" : "data");
         continue;
       }
@@ -247,7 +315,10 @@ function readsOf(chapter, source, names, wanted) {
         continue;
       }
       if (declared?.kind === "class" || (!declared && BUILTINS.has(name))) continue;
-      if (declared?.kind === "import") { complete = false; continue; }  // another file's: not followed
+      if (declared?.kind === "import") {
+        complete = false;
+        continue;
+      } // another file's: not followed
       if (typeof value === "function") {
         // A function from elsewhere (required, imported, made by a call): not followed.
         if (!/\[native code\]/.test(value.toString())) complete = false;
@@ -257,14 +328,18 @@ function readsOf(chapter, source, names, wanted) {
       reads.set(name, value === undefined && declared?.kind !== "data" ? "missing" : "data");
     }
   }
-  return { reads: [...reads].sort().map(([name, kind]) => [name, "", kind]), complete, calls: [...calls].sort() };
+  return {
+    reads: [...reads].sort().map(([name, kind]) => [name, "", kind]),
+    complete,
+    calls: [...calls].sort(),
+  };
 }
 
 function describe(value) {
   if (value === null || value === undefined || typeof value === "boolean") return String(value);
   if (typeof value === "number") return String(value);
   if (Array.isArray(value)) return `an array of ${value.length}`;
-  return `a ${typeof value === "object" ? value.constructor?.name ?? "object" : typeof value}`;
+  return `a ${typeof value === "object" ? (value.constructor?.name ?? "object") : typeof value}`;
 }
 
 export function factsOf(chapter, wanted, names) {
@@ -273,8 +348,14 @@ export function factsOf(chapter, wanted, names) {
     const fn = chapter.value(name);
     if (typeof fn !== "function") continue;
     const parsed = functionNode(fn.toString());
-    functions[name] = { parameters: parsed ? parametersOf(parsed.node) : null, reads: null, complete: false, bound: [], calls: [],
-      empty: parsed?.node.body.type === "BlockStatement" && parsed.node.body.body.length === 0 };
+    functions[name] = {
+      parameters: parsed ? parametersOf(parsed.node) : null,
+      reads: null,
+      complete: false,
+      bound: [],
+      calls: [],
+      empty: parsed?.node.body.type === "BlockStatement" && parsed.node.body.body.length === 0,
+    };
     if (parsed) Object.assign(functions[name], readsOf(chapter, fn.toString(), names, wanted));
   }
   const data = {};
@@ -286,30 +367,47 @@ export function factsOf(chapter, wanted, names) {
   const classes = {};
   for (const [name, each] of chapter.declared) {
     const value = chapter.value(name);
-    if ((each.kind === "class" || (each.kind === "function" && /^[A-Z]/.test(name))) && typeof value === "function") {
+    if (
+      (each.kind === "class" || (each.kind === "function" && /^[A-Z]/.test(name))) &&
+      typeof value === "function"
+    ) {
       const source = value.toString();
-      const constructor = /^class\b/.test(source) ? /constructor\s*\(([^)]*)\)/.exec(source)?.[1] ?? ""
-        : /^function\s*\w*\s*\(([^)]*)\)/.exec(source)?.[1] ?? "";
-      classes[name] = constructor.split(",").map((p) => p.trim().split(/[\s=]/)[0]).filter(Boolean);
+      const constructor = /^class\b/.test(source)
+        ? (/constructor\s*\(([^)]*)\)/.exec(source)?.[1] ?? "")
+        : (/^function\s*\w*\s*\(([^)]*)\)/.exec(source)?.[1] ?? "");
+      classes[name] = constructor
+        .split(",")
+        .map((p) => p.trim().split(/[\s=]/)[0])
+        .filter(Boolean);
     }
   }
-  return { functions, data, defined: [...chapter.declared.keys(), ...Object.keys(chapter.exports)],
-    reachable: chapter.kind === "script" || chapter.settable ? "all" : "exports", classes };
+  return {
+    functions,
+    data,
+    defined: [...chapter.declared.keys(), ...Object.keys(chapter.exports)],
+    reachable: chapter.kind === "script" || chapter.settable ? "all" : "exports",
+    classes,
+  };
 }
 
 // ---- Building a case's data -----------------------------------------------------------
 
-const number = (value) => (value === "inf" ? Infinity : value === "-inf" ? -Infinity : Number(value));
+const number = (value) =>
+  value === "inf" ? Infinity : value === "-inf" ? -Infinity : Number(value);
 const numbers = (value) => Array.from(value, number);
 
 export function decoded(value) {
   if (value === "inf" || value === "-inf") return number(value);
   if (Array.isArray(value)) return value.map(decoded);
-  if (value && typeof value === "object") return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, decoded(v)]));
+  if (value && typeof value === "object")
+    return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, decoded(v)]));
   return value;
 }
 
-const at = (given, dotted) => dotted.split(".").reduce((value, key) => (value && typeof value === "object" ? value[key] : undefined), given);
+const at = (given, dotted) =>
+  dotted
+    .split(".")
+    .reduce((value, key) => (value && typeof value === "object" ? value[key] : undefined), given);
 
 // The chapter's own helpers, where it has them, so that a chapter in the demos' style
 // gets its own Vec, Color and Pt (with their methods): each used only when what it
@@ -332,7 +430,8 @@ export function helpers(chapter) {
     return () => null;
   };
   const xyz = (v, [x, y, z]) => v.x === x && v.y === y && v.z === z;
-  const rgb = (c, [r, g, b]) => (c.r === r && c.g === g && c.b === b) || (c[0] === r && c[1] === g && c[2] === b);
+  const rgb = (c, [r, g, b]) =>
+    (c.r === r && c.g === g && c.b === b) || (c[0] === r && c[1] === g && c[2] === b);
   const light = chapter.value("Light");
   return {
     vector: made(["Vec", "Vec3", "Vector", "Vector3", "Vertex"], xyz),
@@ -340,9 +439,16 @@ export function helpers(chapter) {
     point: made(["Pt", "Point"], (p, [x, y]) => p.x === x && p.y === y),
     matrix: made(["Mat4x4"], (m, [rows]) => Array.isArray(m.data) && m.data[0]?.[0] === rows[0][0]),
     sphere: made(["Sphere"], (s, [center, radius]) => s.center === center && s.radius === radius),
-    lightTypes: light && "AMBIENT" in light ? { field: "ltype", value: (type) => light[type.toUpperCase()], vector: "position" }
-      : chapter.value("LT_AMBIENT") !== undefined
-        ? { field: "type", value: (type) => chapter.value(`LT_${type.toUpperCase()}`), vector: "vector" } : null,
+    lightTypes:
+      light && "AMBIENT" in light
+        ? { field: "ltype", value: (type) => light[type.toUpperCase()], vector: "position" }
+        : chapter.value("LT_AMBIENT") !== undefined
+          ? {
+              field: "type",
+              value: (type) => chapter.value(`LT_${type.toUpperCase()}`),
+              vector: "vector",
+            }
+          : null,
   };
 }
 
@@ -350,8 +456,18 @@ export function helpers(chapter) {
 // writes a vertex's v.x and the demos index theirs; the names are not its own keys, so
 // it reads, spreads and prints as the array it is.
 function named(array, names) {
-  names.forEach((name, i) => Object.defineProperty(array, name, {
-    get() { return this[i]; }, set(value) { this[i] = value; }, enumerable: false, configurable: true }));
+  names.forEach((name, i) =>
+    Object.defineProperty(array, name, {
+      get() {
+        return this[i];
+      },
+      set(value) {
+        this[i] = value;
+      },
+      enumerable: false,
+      configurable: true,
+    }),
+  );
   return array;
 }
 
@@ -361,55 +477,92 @@ function named(array, names) {
 export function defaultAdapter(made) {
   return {
     vector: (value) => made.vector(...numbers(value)) ?? named(numbers(value), ["x", "y", "z"]),
-    point: ([x, y, h = 1]) => made.point(number(x), number(y), number(h)) ?? { x: number(x), y: number(y), h: number(h) },
+    point: ([x, y, h = 1]) =>
+      made.point(number(x), number(y), number(h)) ?? { x: number(x), y: number(y), h: number(h) },
     color: (value) => made.color(...numbers(value)) ?? named(numbers(value), ["r", "g", "b"]),
     matrix: (rows) => made.matrix(rows.map(numbers)) ?? rows.map(numbers),
     rows: (rows) => rows.map(numbers),
     vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
-    plane: (value, adapter) => ({ normal: adapter.vector(value.normal, adapter), D: number(value.D) }),
+    plane: (value, adapter) => ({
+      normal: adapter.vector(value.normal, adapter),
+      D: number(value.D),
+    }),
     booleans: (value) => value.map(Boolean),
-    tangent_basis: (value, adapter) => ({ T: adapter.vector(value.T, adapter), B: adapter.vector(value.B, adapter) }),
+    tangent_basis: (value, adapter) => ({
+      T: adapter.vector(value.T, adapter),
+      B: adapter.vector(value.B, adapter),
+    }),
     triangle: (value, adapter) => ({ v: [...value.v], color: adapter.color(value.color, adapter) }),
-    model: (value, adapter) => ({ vertices: adapter.vectors(value.vertices, adapter),
-      triangles: value.triangles.map((each) => adapter.triangle(each, adapter)) }),
+    model: (value, adapter) => ({
+      vertices: adapter.vectors(value.vertices, adapter),
+      triangles: value.triangles.map((each) => adapter.triangle(each, adapter)),
+    }),
     // texture[i][j]: the texel in column i, row j (rows from the top).
     texture(value, adapter) {
       const { width, height } = value;
       const columns = Array.from({ length: width }, (_, i) =>
-        Array.from({ length: height }, (_, j) => adapter.color(value.texels[j * width + i], adapter)));
+        Array.from({ length: height }, (_, j) =>
+          adapter.color(value.texels[j * width + i], adapter),
+        ),
+      );
       return Object.assign(columns, { width, height });
     },
-    transform: (value, adapter) => ({ scale: number(value.scale), rotation: adapter.matrix(value.rotation, adapter),
-      translation: adapter.vector(value.translation, adapter) }),
+    transform: (value, adapter) => ({
+      scale: number(value.scale),
+      rotation: adapter.matrix(value.rotation, adapter),
+      translation: adapter.vector(value.translation, adapter),
+    }),
     // A sphere: the chapter's own Sphere(center, radius, color, specular, reflective),
     // the demos' order, where it has one that keeps them; else a plain object.
     sphere(value, adapter) {
-      const fields = [adapter.vector(value.center, adapter), number(value.radius), adapter.color(value.color, adapter),
-        number(value.specular ?? -1), number(value.reflective ?? 0)];
-      return made.sphere(...fields) ?? { center: fields[0], radius: fields[1], color: fields[2],
-        specular: fields[3], reflective: fields[4] };
+      const fields = [
+        adapter.vector(value.center, adapter),
+        number(value.radius),
+        adapter.color(value.color, adapter),
+        number(value.specular ?? -1),
+        number(value.reflective ?? 0),
+      ];
+      return (
+        made.sphere(...fields) ?? {
+          center: fields[0],
+          radius: fields[1],
+          color: fields[2],
+          specular: fields[3],
+          reflective: fields[4],
+        }
+      );
     },
     // A light with its type's fields only (an ambient light has no position or direction),
     // or as the demos make it: Light.POINT in ltype and the direction in position.
     light(value, adapter) {
       const where = value.position ?? value.direction;
       if (made.lightTypes) {
-        const light = { [made.lightTypes.field]: made.lightTypes.value(value.type), intensity: number(value.intensity) };
+        const light = {
+          [made.lightTypes.field]: made.lightTypes.value(value.type),
+          intensity: number(value.intensity),
+        };
         if (where) light[made.lightTypes.vector] = adapter.vector(where, adapter);
         return light;
       }
       const light = { type: value.type, intensity: number(value.intensity) };
-      for (const field of ["position", "direction"]) if (value[field]) light[field] = adapter.vector(value[field], adapter);
+      for (const field of ["position", "direction"])
+        if (value[field]) light[field] = adapter.vector(value[field], adapter);
       return light;
     },
     spheres: (value, adapter) => value.map((each) => adapter.sphere(each, adapter)),
     lights: (value, adapter) => value.map((each) => adapter.light(each, adapter)),
-    scene: (value, adapter) => ({ spheres: adapter.spheres(value.spheres ?? [], adapter),
+    scene: (value, adapter) => ({
+      spheres: adapter.spheres(value.spheres ?? [], adapter),
       lights: adapter.lights(value.lights ?? [], adapter),
-      background_color: adapter.color(value.background_color ?? [255, 255, 255], adapter) }),
-    camera: (value, adapter) => ({ position: adapter.vector(value.position, adapter), rotation: adapter.rows(value.rotation, adapter) }),
+      background_color: adapter.color(value.background_color ?? [255, 255, 255], adapter),
+    }),
+    camera: (value, adapter) => ({
+      position: adapter.vector(value.position, adapter),
+      rotation: adapter.rows(value.rotation, adapter),
+    }),
     // Chapter 12's buffer, depth_buffer[x][y] with x and y from 0: 0 is 1/z infinitely far.
-    depth_buffer: (canvas) => Array.from({ length: canvas.width }, () => new Array(canvas.height).fill(0)),
+    depth_buffer: (canvas) =>
+      Array.from({ length: canvas.width }, () => new Array(canvas.height).fill(0)),
   };
 }
 
@@ -418,21 +571,38 @@ function place(chapter, names, given, adapter, readNames) {
   const placed = [];
   for (const [name, spec] of Object.entries(names)) {
     let value = at(given, spec.path);
-    if ((value === undefined || value === null) && spec.empty && at(given, spec.path.split(".").slice(0, -1).join("."))) value = spec.empty;
+    if (
+      (value === undefined || value === null) &&
+      spec.empty &&
+      at(given, spec.path.split(".").slice(0, -1).join("."))
+    )
+      value = spec.empty;
     if (value === undefined || value === null) continue;
     if (spec.dialect !== "book" && !chapter.declared.has(name) && !readNames.has(name)) continue;
     const kind = spec.kind ?? "number";
     if (kind === "canvas") {
       // The demos' canvas.width, and the book's canvas.PutPixel(x, y, color) in a drawing case.
-      const fields = { width: value.width, height: value.height, ...(value.PutPixel ? { PutPixel: value.PutPixel } : {}) };
+      const fields = {
+        width: value.width,
+        height: value.height,
+        ...(value.PutPixel ? { PutPixel: value.PutPixel } : {}),
+      };
       const canvas = chapter.value("canvas");
       if (canvas && typeof canvas === "object") Object.assign(canvas, fields);
       else chapter.assign(name, fields);
     } else if (kind === "scene" && Array.isArray(chapter.value(name))) {
-      chapter.assign(name, adapter.spheres(value.spheres ?? [], adapter));  // a scene kept as the list of its spheres
+      chapter.assign(name, adapter.spheres(value.spheres ?? [], adapter)); // a scene kept as the list of its spheres
     } else {
-      chapter.assign(name, kind === "number" ? number(value) : kind === "PutPixel" ? value
-        : kind === "depth_buffer" ? adapter.depth_buffer(given.canvas, adapter) : adapter[kind](value, adapter));
+      chapter.assign(
+        name,
+        kind === "number"
+          ? number(value)
+          : kind === "PutPixel"
+            ? value
+            : kind === "depth_buffer"
+              ? adapter.depth_buffer(given.canvas, adapter)
+              : adapter[kind](value, adapter),
+      );
     }
     placed.push(name);
   }
@@ -443,12 +613,35 @@ function place(chapter, names, given, adapter, readNames) {
 
 // Answers as plain data: numbers, strings, lists and records of the fields a value has,
 // nothing of the student's types; infinities and NaN as the strings JSON lacks them for.
-const FIELDS = ["x", "y", "z", "w", "h", "r", "g", "b", "center", "radius", "v", "indexes", "data",
-  "triangles", "vertices", "color"];
+const FIELDS = [
+  "x",
+  "y",
+  "z",
+  "w",
+  "h",
+  "r",
+  "g",
+  "b",
+  "center",
+  "radius",
+  "v",
+  "indexes",
+  "data",
+  "triangles",
+  "vertices",
+  "color",
+];
 export function plain(value, budget, depth = 0) {
   if (--budget.left < 0 || depth > 12) throw new RangeError("too large");
   if (value === null || value === undefined) return null;
-  if (typeof value === "number") return Number.isFinite(value) ? value : Number.isNaN(value) ? "nan" : value > 0 ? "inf" : "-inf";
+  if (typeof value === "number")
+    return Number.isFinite(value)
+      ? value
+      : Number.isNaN(value)
+        ? "nan"
+        : value > 0
+          ? "inf"
+          : "-inf";
   if (typeof value === "boolean") return value;
   if (typeof value === "string") return value.slice(0, 200);
   if (typeof value === "bigint") return Number(value);
@@ -462,7 +655,8 @@ export function plain(value, budget, depth = 0) {
     if (typeof value[key] !== "function") fields[key] = plain(value[key], budget, depth + 1);
   }
   for (const key of FIELDS) {
-    if (!(key in fields) && key in value && typeof value[key] !== "function") fields[key] = plain(value[key], budget, depth + 1);
+    if (!(key in fields) && key in value && typeof value[key] !== "function")
+      fields[key] = plain(value[key], budget, depth + 1);
   }
   if (Object.keys(fields).length === 0 && typeof value[Symbol.iterator] === "function") {
     const items = [];
@@ -483,24 +677,29 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
   if (request.drawing) {
     pixels = [];
     given.canvas.PutPixel = (x, y, color) => {
-      if (pixels.length >= MAX_PIXELS) throw new RangeError(`more than ${MAX_PIXELS} PutPixel calls`);
+      if (pixels.length >= MAX_PIXELS)
+        throw new RangeError(`more than ${MAX_PIXELS} PutPixel calls`);
       pixels.push([x, y, color]);
     };
   }
   let placed, calls;
   try {
     placed = place(chapter, names, given, adapter, readNames);
-    if (adapter.setup) placed.push(...setUpByAdapter(chapter, adapter, given, functionReads(request.function)));
-    calls = request.calls.map((call) => request.parameters.map(([name, kind, from]) => {
-      const value = decoded(from ? from.map((each) => call[each]) : call[name]);
-      return kind === "number" ? number(value) : adapter[kind](value, adapter);
-    }));
+    if (adapter.setup)
+      placed.push(...setUpByAdapter(chapter, adapter, given, functionReads(request.function)));
+    calls = request.calls.map((call) =>
+      request.parameters.map(([name, kind, from]) => {
+        const value = decoded(from ? from.map((each) => call[each]) : call[name]);
+        return kind === "number" ? number(value) : adapter[kind](value, adapter);
+      }),
+    );
   } catch (error) {
     if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
     return { adapter_failed: oneLine(error, ours) };
   }
   const fn = chapter.value(request.function);
-  let value, args = [];
+  let value,
+    args = [];
   try {
     for (args of calls) value = fn(...args);
   } catch (error) {
@@ -525,7 +724,11 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
 function setUpByAdapter(chapter, adapter, given, readNames) {
   const fingerprint = (name) => {
     const value = chapter.value(name);
-    return Array.isArray(value) ? [value, ...value] : value && typeof value === "object" ? [value, ...Object.values(value)] : [value];
+    return Array.isArray(value)
+      ? [value, ...value]
+      : value && typeof value === "object"
+        ? [value, ...Object.values(value)]
+        : [value];
   };
   // A number or string is boxed while setup runs, so that setting it again to the same
   // value (600 for 600) is seen as set; one left as it was is unboxed.
@@ -544,12 +747,13 @@ function setUpByAdapter(chapter, adapter, given, readNames) {
   } finally {
     for (const [name, [box, value]] of boxed) {
       if (chapter.value(name) === box) chapter.assign(name, value);
-      else boxed.set(name, null);  // set by the setup
+      else boxed.set(name, null); // set by the setup
     }
   }
   return [...readNames].filter((name) => {
     if (boxed.has(name)) return boxed.get(name) === null;
-    const now = fingerprint(name), then = before.get(name);
+    const now = fingerprint(name),
+      then = before.get(name);
     return now.length !== then.length || now.some((each, i) => each !== then[i]);
   });
 }
@@ -568,10 +772,17 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
   const { width, height } = recipe.given.canvas;
   const pixels = new Uint8ClampedArray(width * height * 4).fill(255);
   const put = (x, y, color) => {
-    const [column, row] = [Math.floor(width / 2) + Math.trunc(x), Math.floor(height / 2) - Math.trunc(y) - 1];
+    const [column, row] = [
+      Math.floor(width / 2) + Math.trunc(x),
+      Math.floor(height / 2) - Math.trunc(y) - 1,
+    ];
     if (!(column >= 0 && column < width && row >= 0 && row < height)) return;
-    const rgb = Array.isArray(color) || ArrayBuffer.isView(color) ? color : [color?.r, color?.g, color?.b];
-    pixels.set([channel(rgb[0]), channel(rgb[1]), channel(rgb[2]), 255], (row * width + column) * 4);
+    const rgb =
+      Array.isArray(color) || ArrayBuffer.isView(color) ? color : [color?.r, color?.g, color?.b];
+    pixels.set(
+      [channel(rgb[0]), channel(rgb[1]), channel(rgb[2]), 255],
+      (row * width + column) * 4,
+    );
   };
   const given = decoded(recipe.given);
   given.canvas = { ...given.canvas, PutPixel: put };
@@ -589,20 +800,27 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
     for (let x = -Math.floor(width / 2); x < Math.ceil(width / 2); ++x) {
       for (let y = -Math.floor(height / 2); y < Math.ceil(height / 2); ++y) {
         const D = through(x, y);
-        put(x, y, depth === undefined ? trace(O, D, tMin, Infinity) : trace(O, D, tMin, Infinity, depth));
+        put(
+          x,
+          y,
+          depth === undefined ? trace(O, D, tMin, Infinity) : trace(O, D, tMin, Infinity, depth),
+        );
       }
       if (x % 20 === 0) progress((x + width / 2) / width);
     }
   } else {
-    const call = (name, args) => theirs(name)(...(kinds[name] ?? []).map(([parameter, kind]) => {
-      const value = args[parameter];
-      if (!(value && typeof value === "object" && "call" in value)) {
-        return kind === "number" ? number(value) : adapter[kind](decoded(value), adapter);
-      }
-      const made = call(value.call, value.args);
-      if (kind === "point") notes.push(...fractionNote(value.call, made, notes));
-      return made;
-    }));
+    const call = (name, args) =>
+      theirs(name)(
+        ...(kinds[name] ?? []).map(([parameter, kind]) => {
+          const value = args[parameter];
+          if (!(value && typeof value === "object" && "call" in value)) {
+            return kind === "number" ? number(value) : adapter[kind](decoded(value), adapter);
+          }
+          const made = call(value.call, value.args);
+          if (kind === "point") notes.push(...fractionNote(value.call, made, notes));
+          return made;
+        }),
+      );
     for (const [name, args] of recipe.calls) call(name, args);
   }
   return { pixels, width, height, notes };
@@ -613,6 +831,8 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
 function fractionNote(name, point, notes) {
   const [x, y] = Array.isArray(point) ? point : [point?.x, point?.y];
   if (notes.length > 0 || (Number.isInteger(x) && Number.isInteger(y))) return [];
-  return [`your ${name} returned the canvas point (${x}, ${y}): ours are whole pixels, truncated toward zero ` +
-    "(docs/conventions.md, \"Rounding in the rasterizer\"), and your drawing functions draw from other end points"];
+  return [
+    `your ${name} returned the canvas point (${x}, ${y}): ours are whole pixels, truncated toward zero ` +
+      '(docs/conventions.md, "Rounding in the rasterizer"), and your drawing functions draw from other end points',
+  ];
 }

@@ -13,7 +13,7 @@ export function pageScripts(html, file) {
     const src = /\bsrc\s*=\s*["']?([^"'\s>]+)/i.exec(match[1])?.[1];
     if (/\btype\s*=\s*["']?(module|text\/(?!javascript))/i.test(match[1])) continue;
     if (src) {
-      if (/^[a-z]+:/i.test(src)) continue;  // another site's: not the chapter
+      if (/^[a-z]+:/i.test(src)) continue; // another site's: not the chapter
       const local = path.resolve(path.dirname(file), src);
       scripts.push({ code: fs.readFileSync(local, "utf8"), line: 0, filename: local });
     } else {

@@ -23,15 +23,31 @@ import readline from "node:readline";
 import { pathToFileURL } from "node:url";
 import util from "node:util";
 import vm from "node:vm";
-import { ChapterBase, GETTER, LoadError, MAX_ANSWER, SETTER, constsMadeLet, declarations, defaultAdapter, factsOf,
-  helpers, moduleMadeSettable, oneLine, parse, runCase, syntaxError, useParser } from "./js_core.mjs";
+import {
+  ChapterBase,
+  GETTER,
+  LoadError,
+  MAX_ANSWER,
+  SETTER,
+  constsMadeLet,
+  declarations,
+  defaultAdapter,
+  factsOf,
+  helpers,
+  moduleMadeSettable,
+  oneLine,
+  parse,
+  runCase,
+  syntaxError,
+  useParser,
+} from "./js_core.mjs";
 import { pageScripts } from "./js_page.mjs";
 import { installPage } from "./page_stand_in.mjs";
 
 const require = createRequire(import.meta.url);
 useParser(require("acorn"), require("acorn-globals"));
 const RUNNER_DIR = path.dirname(new URL(import.meta.url).pathname);
-const MAX_PRINTED = 4000;  // characters of what one case printed, kept for the report
+const MAX_PRINTED = 4000; // characters of what one case printed, kept for the report
 
 // The chapter, loaded from its file in this process's global scope.
 class Chapter extends ChapterBase {
@@ -68,14 +84,18 @@ class Chapter extends ChapterBase {
       // variables settable; else as it is, its own names out of reach.
       const url = pathToFileURL(this.file).href;
       if (typeof Module.register === "function") {
-        Module.register("./module_hook.mjs", import.meta.url,
-          { data: { url, source: moduleMadeSettable(parse(source, "module"), source) } });
+        Module.register("./module_hook.mjs", import.meta.url, {
+          data: { url, source: moduleMadeSettable(parse(source, "module"), source) },
+        });
       }
       const { [SETTER]: set, [GETTER]: get, ...loaded } = await import(url);
       if (set && get) {
         this.settable = { has: (name) => this.declared.get(name)?.kind === "data", get, set };
       }
-      this.exports = loaded.default && typeof loaded.default === "object" ? { ...loaded.default, ...loaded } : loaded;
+      this.exports =
+        loaded.default && typeof loaded.default === "object"
+          ? { ...loaded.default, ...loaded }
+          : loaded;
       return;
     }
     // A script written for a page (it reaches for document) gets the page's stand-in.
@@ -91,14 +111,25 @@ class Chapter extends ChapterBase {
       throw syntaxError(error, filename, line);
     }
     this.declare(program, code);
-    const module = { exports: this.exports, id: filename, filename, loaded: false, children: [], paths: [] };
+    const module = {
+      exports: this.exports,
+      id: filename,
+      filename,
+      loaded: false,
+      children: [],
+      paths: [],
+    };
     module.require = createRequire(filename);
-    Object.assign(globalThis, { module, exports: module.exports, require: module.require,
-      __filename: filename, __dirname: path.dirname(filename) });
+    Object.assign(globalThis, {
+      module,
+      exports: module.exports,
+      require: module.require,
+      __filename: filename,
+      __dirname: path.dirname(filename),
+    });
     vm.runInThisContext(constsMadeLet(program, code), { filename, lineOffset: line });
     this.exports = module.exports;
   }
-
 }
 
 // ---- The loop -------------------------------------------------------------------------
@@ -122,7 +153,11 @@ function capturePrinting() {
     if (text.length <= MAX_PRINTED) text += more.slice(0, MAX_PRINTED + 1 - text.length);
   };
   const methods = ["log", "info", "debug", "warn", "error", "trace"];
-  const saved = { console: methods.map((name) => console[name]), out: process.stdout.write, err: process.stderr.write };
+  const saved = {
+    console: methods.map((name) => console[name]),
+    out: process.stdout.write,
+    err: process.stderr.write,
+  };
   for (const name of methods) console[name] = (...values) => keep(`${util.format(...values)}\n`);
   process.stdout.write = process.stderr.write = (chunk) => {
     keep(typeof chunk === "string" ? chunk : Buffer.from(chunk).toString("utf8"));
@@ -130,11 +165,14 @@ function capturePrinting() {
   };
   return {
     stop() {
-      methods.forEach((name, i) => { console[name] = saved.console[i]; });
+      methods.forEach((name, i) => {
+        console[name] = saved.console[i];
+      });
       Object.assign(process.stdout, { write: saved.out });
       Object.assign(process.stderr, { write: saved.err });
     },
-    printed: () => (text ? { printed: text.slice(0, MAX_PRINTED), printed_cut: text.length > MAX_PRINTED } : {}),
+    printed: () =>
+      text ? { printed: text.slice(0, MAX_PRINTED), printed_cut: text.length > MAX_PRINTED } : {},
   };
 }
 
@@ -143,9 +181,18 @@ function send(message) {
   try {
     text = JSON.stringify(message);
   } catch {
-    text = JSON.stringify({ id: message.id, nonce: message.nonce, unreadable: "returned something that cannot be sent" });
+    text = JSON.stringify({
+      id: message.id,
+      nonce: message.nonce,
+      unreadable: "returned something that cannot be sent",
+    });
   }
-  if (text.length > MAX_ANSWER) text = JSON.stringify({ id: message.id, nonce: message.nonce, unreadable: "returned something too large to send" });
+  if (text.length > MAX_ANSWER)
+    text = JSON.stringify({
+      id: message.id,
+      nonce: message.nonce,
+      unreadable: "returned something too large to send",
+    });
   fs.writeSync(4, `${text}\n`);
 }
 
@@ -153,7 +200,10 @@ async function main() {
   // The requests' pipe read by the event loop (a net.Socket), not by a thread of libuv's
   // pool blocked in read(): Node.js joins that pool as it exits, so a chapter's
   // process.exit() while it waits would hang until the checker's load limit.
-  const lines = readline.createInterface({ input: new net.Socket({ fd: 3, readable: true, writable: false }), crlfDelay: Infinity });
+  const lines = readline.createInterface({
+    input: new net.Socket({ fd: 3, readable: true, writable: false }),
+    crlfDelay: Infinity,
+  });
   const requests = lines[Symbol.asyncIterator]();
   const { load } = JSON.parse((await requests.next()).value);
   const chapter = new Chapter(load.module);
@@ -168,17 +218,26 @@ async function main() {
     } catch (error) {
       const writes = ["EROFS", "EACCES", "EPERM"].includes(error?.code)
         ? ": it writes a file as it loads, which it may not here; keep that under if (require.main === module) " +
-          "(CommonJS) or if (process.argv[1] === fileURLToPath(import.meta.url)) (an ES module)" : "";
-      throw error instanceof LoadError ? error : new LoadError(oneLine(error, [RUNNER_DIR]) + writes);
+          "(CommonJS) or if (process.argv[1] === fileURLToPath(import.meta.url)) (an ES module)"
+        : "";
+      throw error instanceof LoadError
+        ? error
+        : new LoadError(oneLine(error, [RUNNER_DIR]) + writes);
     }
-    const own = load.adapter ? await loadAdapter(load.adapter, chapter).catch((error) => {
-      throw new LoadError(`your adapter ${load.adapter} does not load: ${oneLine(error, [RUNNER_DIR])}`);
-    }) : {};
+    const own = load.adapter
+      ? await loadAdapter(load.adapter, chapter).catch((error) => {
+          throw new LoadError(
+            `your adapter ${load.adapter} does not load: ${oneLine(error, [RUNNER_DIR])}`,
+          );
+        })
+      : {};
     adapter = { ...defaultAdapter(helpers(chapter)), ...own };
     facts = factsOf(chapter, load.functions, load.names);
   } catch (error) {
-    const text = error instanceof LoadError && error.message.startsWith("your adapter") ? error.message
-      : `your module ${load.module} does not load: ${error.message}`;
+    const text =
+      error instanceof LoadError && error.message.startsWith("your adapter")
+        ? error.message
+        : `your module ${load.module} does not load: ${error.message}`;
     send({ load_error: text });
     return;
   }
@@ -187,18 +246,27 @@ async function main() {
   // case: an error there is the page's, and ends nothing.
   process.on("uncaughtException", () => {});
   process.on("unhandledRejection", () => {});
-  const readNames = new Set(Object.values(facts.functions).flatMap((f) => (f.reads ?? []).map(([name]) => name)));
+  const readNames = new Set(
+    Object.values(facts.functions).flatMap((f) => (f.reads ?? []).map(([name]) => name)),
+  );
   const functionReads = (name) => (facts.functions[name]?.reads ?? []).map(([each]) => each);
   for (let next = await requests.next(); !next.done; next = await requests.next()) {
     const request = JSON.parse(next.value);
     let answer;
-    globalThis.__cgfsCase = () => runCase(request, chapter, adapter, load.names, readNames, functionReads, [RUNNER_DIR]);
+    globalThis.__cgfsCase = () =>
+      runCase(request, chapter, adapter, load.names, readNames, functionReads, [RUNNER_DIR]);
     const printing = capturePrinting();
     try {
-      answer = vm.runInThisContext("globalThis.__cgfsCase()", { timeout: Math.round(request.limit * 1000) });
+      answer = vm.runInThisContext("globalThis.__cgfsCase()", {
+        timeout: Math.round(request.limit * 1000),
+      });
     } catch (error) {
-      answer = error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT" ? { timeout: true }
-        : { unreadable: `returned something that cannot be sent (${oneLine(error, [RUNNER_DIR])})` };
+      answer =
+        error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT"
+          ? { timeout: true }
+          : {
+              unreadable: `returned something that cannot be sent (${oneLine(error, [RUNNER_DIR])})`,
+            };
     } finally {
       printing.stop();
     }

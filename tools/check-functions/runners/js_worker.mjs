@@ -15,8 +15,23 @@
 // A case or a draw that runs too long is ended by the page, which ends the worker.
 import * as acorn from "acorn";
 import findGlobals from "acorn-globals";
-import { ChapterBase, LoadError, constsMadeLet, declarations, declaredFunctions, defaultAdapter, drawFigure, factsOf,
-  helpers, nameSource, oneLine, parse, runCase, syntaxError, useParser } from "./js_core.mjs";
+import {
+  ChapterBase,
+  LoadError,
+  constsMadeLet,
+  declarations,
+  declaredFunctions,
+  defaultAdapter,
+  drawFigure,
+  factsOf,
+  helpers,
+  nameSource,
+  oneLine,
+  parse,
+  runCase,
+  syntaxError,
+  useParser,
+} from "./js_core.mjs";
 import { installPage } from "./page_stand_in.mjs";
 
 useParser(acorn, findGlobals);
@@ -24,7 +39,7 @@ useParser(acorn, findGlobals);
 // The reader's code, run in this worker's global scope.
 class PageChapter extends ChapterBase {
   constructor(file) {
-    super(file, (code) => (0, eval)(code));  // global code, as a script's
+    super(file, (code) => (0, eval)(code)); // global code, as a script's
   }
 
   async load(code) {
@@ -49,10 +64,18 @@ class PageChapter extends ChapterBase {
     // CommonJS file its module.exports, and a require that says why it cannot be had.
     if (/\bdocument\s*\.|\bwindow\s*\./.test(code)) installPage("");
     const module = { exports: {} };
-    Object.assign(globalThis, { module, exports: module.exports, require: (name) => {
-      throw new Error(`require("${name}"): a chapter's page runs one file, with no other files beside it`);
-    } });
-    const address = URL.createObjectURL(new Blob([constsMadeLet(program, code)], { type: "text/javascript" }));
+    Object.assign(globalThis, {
+      module,
+      exports: module.exports,
+      require: (name) => {
+        throw new Error(
+          `require("${name}"): a chapter's page runs one file, with no other files beside it`,
+        );
+      },
+    });
+    const address = URL.createObjectURL(
+      new Blob([constsMadeLet(program, code)], { type: "text/javascript" }),
+    );
     nameSource(address, this.file);
     importScripts(address);
     this.exports = module.exports;
@@ -72,8 +95,12 @@ function declared(code) {
   return {};
 }
 
-let chapter = null, adapter = null, facts = null, names = null;
-const readNames = () => new Set(Object.values(facts.functions).flatMap((f) => (f.reads ?? []).map(([name]) => name)));
+let chapter = null,
+  adapter = null,
+  facts = null,
+  names = null;
+const readNames = () =>
+  new Set(Object.values(facts.functions).flatMap((f) => (f.reads ?? []).map(([name]) => name)));
 const functionReads = (name) => (facts.functions[name]?.reads ?? []).map(([each]) => each);
 
 const operations = {
@@ -86,7 +113,9 @@ const operations = {
     try {
       await chapter.load(code);
     } catch (error) {
-      return { load_error: `your code does not load: ${error instanceof LoadError ? error.message : oneLine(error)}` };
+      return {
+        load_error: `your code does not load: ${error instanceof LoadError ? error.message : oneLine(error)}`,
+      };
     }
     adapter = defaultAdapter(helpers(chapter));
     facts = factsOf(chapter, functions, names);
@@ -97,8 +126,9 @@ const operations = {
   },
   draw({ recipe, kinds }) {
     try {
-      const drawn = drawFigure(recipe, chapter, adapter, names, readNames(), kinds,
-        (fraction) => postMessage({ progress: fraction }));
+      const drawn = drawFigure(recipe, chapter, adapter, names, readNames(), kinds, (fraction) =>
+        postMessage({ progress: fraction }),
+      );
       return { answer: drawn, transfer: [drawn.pixels.buffer] };
     } catch (error) {
       return { problem: oneLine(error) };

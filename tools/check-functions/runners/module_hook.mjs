@@ -10,6 +10,7 @@ export async function initialize(data) {
 }
 
 export async function load(url, context, nextLoad) {
-  if (chapter && url === chapter.url) return { format: "module", source: chapter.source, shortCircuit: true };
+  if (chapter && url === chapter.url)
+    return { format: "module", source: chapter.source, shortCircuit: true };
   return nextLoad(url, context);
 }

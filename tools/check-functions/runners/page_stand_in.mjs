@@ -18,7 +18,11 @@ function anything() {
 }
 
 function context2d() {
-  const imageData = (width, height) => ({ width, height, data: new Uint8ClampedArray(Math.max(0, width * height * 4)) });
+  const imageData = (width, height) => ({
+    width,
+    height,
+    data: new Uint8ClampedArray(Math.max(0, width * height * 4)),
+  });
   const known = {
     getImageData: (x, y, width, height) => imageData(width, height),
     createImageData: (width, height) => imageData(width, height),
@@ -29,10 +33,18 @@ function context2d() {
 // The canvas element, its size as the page's <canvas> gives it.
 function canvasElement(html) {
   const tag = /<canvas\b[^>]*>/i.exec(html)?.[0] ?? "";
-  const size = (name) => Number(new RegExp(`\\b${name}\\s*=\\s*["']?(\\d+)`, "i").exec(tag)?.[1] ?? 600);
+  const size = (name) =>
+    Number(new RegExp(`\\b${name}\\s*=\\s*["']?(\\d+)`, "i").exec(tag)?.[1] ?? 600);
   const context = context2d();
-  return { width: size("width"), height: size("height"), style: {}, getContext: () => context,
-    addEventListener() {}, removeEventListener() {}, getBoundingClientRect: () => ({ left: 0, top: 0 }) };
+  return {
+    width: size("width"),
+    height: size("height"),
+    style: {},
+    getContext: () => context,
+    addEventListener() {},
+    removeEventListener() {},
+    getBoundingClientRect: () => ({ left: 0, top: 0 }),
+  };
 }
 
 export function installPage(html) {
@@ -55,8 +67,16 @@ export function installPage(html) {
   };
   // An image that never loads: a page's textures stay empty.
   globalThis.Image = function Image() {
-    return new Proxy({ width: 0, height: 0 }, { get: (target, key) => (key in target ? target[key] : anything()),
-      set: (target, key, value) => { target[key] = value; return true; } });
+    return new Proxy(
+      { width: 0, height: 0 },
+      {
+        get: (target, key) => (key in target ? target[key] : anything()),
+        set: (target, key, value) => {
+          target[key] = value;
+          return true;
+        },
+      },
+    );
   };
   globalThis.requestAnimationFrame = () => 0;
   globalThis.alert = () => {};

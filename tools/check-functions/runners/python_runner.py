@@ -157,23 +157,34 @@ class DefaultAdapter:
 
     @classmethod
     def model(cls, value):
-        return Record(vertices=cls.vectors(value["vertices"]),
-                      triangles=[cls.triangle(each) for each in value["triangles"]])
+        return Record(
+            vertices=cls.vectors(value["vertices"]),
+            triangles=[cls.triangle(each) for each in value["triangles"]],
+        )
 
     @classmethod
     def texture(cls, value):
-        return Texture(value["width"], value["height"], [cls.color(each) for each in value["texels"]])
+        return Texture(
+            value["width"], value["height"], [cls.color(each) for each in value["texels"]]
+        )
 
     @classmethod
     def transform(cls, value):
-        return Record(scale=number(value["scale"]), rotation=cls.matrix(value["rotation"]),
-                      translation=cls.vector(value["translation"]))
+        return Record(
+            scale=number(value["scale"]),
+            rotation=cls.matrix(value["rotation"]),
+            translation=cls.vector(value["translation"]),
+        )
 
     @classmethod
     def sphere(cls, value):
-        return Record(center=cls.vector(value["center"]), radius=number(value["radius"]),
-                      color=cls.color(value["color"]), specular=number(value.get("specular", -1)),
-                      reflective=number(value.get("reflective", 0)))
+        return Record(
+            center=cls.vector(value["center"]),
+            radius=number(value["radius"]),
+            color=cls.color(value["color"]),
+            specular=number(value.get("specular", -1)),
+            reflective=number(value.get("reflective", 0)),
+        )
 
     @classmethod
     def light(cls, value):
@@ -195,15 +206,19 @@ class DefaultAdapter:
 
     @classmethod
     def scene(cls, value):
-        return Record(spheres=cls.spheres(value.get("spheres", [])),
-                      lights=cls.lights(value.get("lights", [])),
-                      background_color=cls.color(value.get("background_color", [255, 255, 255])))
+        return Record(
+            spheres=cls.spheres(value.get("spheres", [])),
+            lights=cls.lights(value.get("lights", [])),
+            background_color=cls.color(value.get("background_color", [255, 255, 255])),
+        )
 
     @classmethod
     def camera(cls, value):
         """Chapter 5's camera: its position, and its rotation, a 3x3 matrix row by row."""
-        return Record(position=cls.vector(value["position"]),
-                      rotation=tuple(numbers(row) for row in value["rotation"]))
+        return Record(
+            position=cls.vector(value["position"]),
+            rotation=tuple(numbers(row) for row in value["rotation"]),
+        )
 
     @staticmethod
     def rows(value):
@@ -240,9 +255,14 @@ def one_line(error):
     """An exception in one line, at the last line of the student's code it went through
     (for a syntax error, where Python found it)."""
     if isinstance(error, SyntaxError) and error.filename:
-        return f"{type(error).__name__}: {error.msg} (at {Path(error.filename).name}:{error.lineno})"
-    frames = [frame for frame in traceback.extract_tb(error.__traceback__)
-              if not frame.filename.startswith(RUNNER_DIR) and not frame.filename.startswith("<frozen")]
+        return (
+            f"{type(error).__name__}: {error.msg} (at {Path(error.filename).name}:{error.lineno})"
+        )
+    frames = [
+        frame
+        for frame in traceback.extract_tb(error.__traceback__)
+        if not frame.filename.startswith(RUNNER_DIR) and not frame.filename.startswith("<frozen")
+    ]
     place = f" (at {Path(frames[-1].filename).name}:{frames[-1].lineno})" if frames else ""
     text = str(error).splitlines()[0] if str(error) else ""
     return f"{type(error).__name__}{': ' + text if text else ''}{place}"
@@ -272,11 +292,13 @@ def load(path, name):
         if isinstance(error, ModuleNotFoundError) and error.name:
             version = ".".join(map(str, sys.version_info[:3]))
             package = error.name.split(".")[0]
-            hint = (f": neither your folder nor the Python that ran it, {sys.executable} ({version}), has "
-                    f"'{package}'; install it for that Python ({sys.executable} -m pip install {package}, or your "
-                    "system's package), or put the python3 that has it first on your PATH")
+            hint = (
+                f": neither your folder nor the Python that ran it, {sys.executable} ({version}), has "
+                f"'{package}'; install it for that Python ({sys.executable} -m pip install {package}, or your "
+                "system's package), or put the python3 that has it first on your PATH"
+            )
         if isinstance(error, OSError) and error.errno in (errno.EROFS, errno.EACCES, errno.EPERM):
-            hint = ": it writes a file as it loads, which it may not here; keep that under if __name__ == \"__main__\":"
+            hint = ': it writes a file as it loads, which it may not here; keep that under if __name__ == "__main__":'
         raise LoadError(f"{name} {path} does not load: {one_line(error)}{hint}") from None
     return module
 
@@ -286,10 +308,13 @@ def load(path, name):
 # student's own files it calls), so that a case whose canvas or scene never reaches the
 # code is named as such, not as a mistake in it.
 
+
 def code_reads(code):
     """The global names a code object (and the functions and lambdas inside it) loads."""
     for instruction in dis.get_instructions(code):
-        if instruction.opname in ("LOAD_GLOBAL", "LOAD_NAME") and isinstance(instruction.argval, str):
+        if instruction.opname in ("LOAD_GLOBAL", "LOAD_NAME") and isinstance(
+            instruction.argval, str
+        ):
             yield instruction.argval
     for constant in code.co_consts:
         if isinstance(constant, types.CodeType):
@@ -297,12 +322,13 @@ def code_reads(code):
 
 
 def is_students(function, folder):
-    return isinstance(function, types.FunctionType) and \
-        os.path.abspath(function.__code__.co_filename).startswith(folder + os.sep)
+    return isinstance(function, types.FunctionType) and os.path.abspath(
+        function.__code__.co_filename
+    ).startswith(folder + os.sep)
 
 
 def module_label(namespace, main):
-    """"" for the chapter's own module, else the file a namespace belongs to."""
+    """ "" for the chapter's own module, else the file a namespace belongs to."""
     return "" if namespace is main.__dict__ else Path(namespace.get("__file__") or "?").name
 
 
@@ -319,7 +345,9 @@ def global_reads(function, main, folder, names, wanted=()):
         namespace = current.__globals__
         for name in set(code_reads(current.__code__)):
             if name in names:
-                reads[(name, module_label(namespace, main))] = "data" if name in namespace else "missing"
+                reads[(name, module_label(namespace, main))] = (
+                    "data" if name in namespace else "missing"
+                )
                 continue
             if name in namespace:
                 value = namespace[name]
@@ -335,7 +363,8 @@ def global_reads(function, main, folder, names, wanted=()):
                         calls.add(name)
                 continue
             if isinstance(value, types.ModuleType) and os.path.abspath(
-                    getattr(value, "__file__", None) or "/").startswith(folder + os.sep):
+                getattr(value, "__file__", None) or "/"
+            ).startswith(folder + os.sep):
                 complete = False  # a module of the student's: what is called in it is not followed
                 continue
             if isinstance(value, (type, types.ModuleType, types.BuiltinFunctionType)):
@@ -344,8 +373,11 @@ def global_reads(function, main, folder, names, wanted=()):
                 complete = False
                 continue
             reads[(name, module_label(namespace, main))] = "data"
-    return {"reads": [[name, file, kind] for (name, file), kind in sorted(reads.items())],
-            "complete": complete, "calls": sorted(calls)}
+    return {
+        "reads": [[name, file, kind] for (name, file), kind in sorted(reads.items())],
+        "complete": complete,
+        "calls": sorted(calls),
+    }
 
 
 def bound_defaults(function):
@@ -360,13 +392,22 @@ def bound_defaults(function):
         return []
     arguments = definition.args
     positional = arguments.posonlyargs + arguments.args
-    pairs = list(zip(positional[len(positional) - len(arguments.defaults):], arguments.defaults))
-    pairs += [(arg, default) for arg, default in zip(arguments.kwonlyargs, arguments.kw_defaults) if default]
+    pairs = list(zip(positional[len(positional) - len(arguments.defaults) :], arguments.defaults))
+    pairs += [
+        (arg, default)
+        for arg, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
+        if default
+    ]
     bound = []
     for arg, default in pairs:
-        names = [node.id for node in ast.walk(default) if isinstance(node, ast.Name)
-                 and node.id in function.__globals__ and not callable(function.__globals__[node.id])
-                 and not isinstance(function.__globals__[node.id], types.ModuleType)]
+        names = [
+            node.id
+            for node in ast.walk(default)
+            if isinstance(node, ast.Name)
+            and node.id in function.__globals__
+            and not callable(function.__globals__[node.id])
+            and not isinstance(function.__globals__[node.id], types.ModuleType)
+        ]
         if names:
             bound.append({"parameter": arg.arg, "default": ast.unparse(default), "names": names})
     return bound
@@ -375,10 +416,15 @@ def bound_defaults(function):
 def is_empty(definition):
     """Whether a def's body has nothing in it but `pass`, `...` or a docstring, as a
     page's starter leaves it: not written yet."""
-    return all(isinstance(statement, ast.Pass) or (
-        isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
-        and (isinstance(statement.value.value, str) or statement.value.value is Ellipsis))
-        for statement in definition.body)
+    return all(
+        isinstance(statement, ast.Pass)
+        or (
+            isinstance(statement, ast.Expr)
+            and isinstance(statement.value, ast.Constant)
+            and (isinstance(statement.value.value, str) or statement.value.value is Ellipsis)
+        )
+        for statement in definition.body
+    )
 
 
 def declared_functions(source):
@@ -390,8 +436,12 @@ def declared_functions(source):
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             a = node.args
             positional = len(a.posonlyargs) + len(a.args)
-            found[node.name] = {"count": positional, "required": positional - len(a.defaults),
-                                "more": a.vararg is not None, "empty": is_empty(node)}
+            found[node.name] = {
+                "count": positional,
+                "required": positional - len(a.defaults),
+                "more": a.vararg is not None,
+                "empty": is_empty(node),
+            }
     return found
 
 
@@ -401,8 +451,11 @@ def empty_body(function):
         tree = ast.parse(textwrap.dedent(inspect.getsource(function)))
     except (OSError, TypeError, SyntaxError):
         return False
-    return bool(tree.body) and isinstance(tree.body[0], (ast.FunctionDef, ast.AsyncFunctionDef)) \
+    return (
+        bool(tree.body)
+        and isinstance(tree.body[0], (ast.FunctionDef, ast.AsyncFunctionDef))
         and is_empty(tree.body[0])
+    )
 
 
 def parameters(function):
@@ -414,8 +467,11 @@ def parameters(function):
     kinds = (inspect.Parameter.POSITIONAL_ONLY, inspect.Parameter.POSITIONAL_OR_KEYWORD)
     listed = [p for p in signature.parameters.values() if p.kind in kinds]
     varargs = any(p.kind == inspect.Parameter.VAR_POSITIONAL for p in signature.parameters.values())
-    return {"names": [p.name for p in listed], "required": sum(p.default is p.empty for p in listed),
-            "more": varargs}
+    return {
+        "names": [p.name for p in listed],
+        "required": sum(p.default is p.empty for p in listed),
+        "more": varargs,
+    }
 
 
 def described(value):
@@ -435,25 +491,41 @@ def facts(main, wanted, folder, names):
         function = getattr(main, name, None)
         if not callable(function):
             continue
-        fact = {"parameters": parameters(function), "reads": None, "complete": False, "bound": [], "calls": []}
+        fact = {
+            "parameters": parameters(function),
+            "reads": None,
+            "complete": False,
+            "bound": [],
+            "calls": [],
+        }
         if isinstance(function, types.FunctionType):
             fact.update(global_reads(function, main, folder, names, wanted))
             fact["bound"] = bound_defaults(function)
             fact["empty"] = empty_body(function)
         functions[name] = fact
-    data = {name: described(value) for name, value in vars(main).items()
-            if not name.startswith("__") and not callable(value)
-            and not isinstance(value, (types.ModuleType, type))}
+    data = {
+        name: described(value)
+        for name, value in vars(main).items()
+        if not name.startswith("__")
+        and not callable(value)
+        and not isinstance(value, (types.ModuleType, type))
+    }
     classes = {}
     for name, value in vars(main).items():
         if isinstance(value, type) and value.__module__ == main.__name__:
             made = parameters(value)
             classes[name] = made["names"] if made else []
-    return {"functions": functions, "data": data, "defined": sorted(n for n in vars(main) if not n.startswith("__")),
-            "reachable": "all", "classes": classes}
+    return {
+        "functions": functions,
+        "data": data,
+        "defined": sorted(n for n in vars(main) if not n.startswith("__")),
+        "reachable": "all",
+        "classes": classes,
+    }
 
 
 # Placing a case's canvas, viewport and scene where the chapter reads them.
+
 
 class Drawing:
     """The checker's PutPixel: records every call as it is made (x, y and the colour,
@@ -489,22 +561,32 @@ class Chapter:
     def targets(self, name, dialect):
         """The modules a name of the table is set on: the chapter's module for the
         book's names, and every module of the student's that defines or reads it."""
-        return [module for label, module in self.modules.items()
-                if (label == "" and dialect == "book") or name in vars(module)
-                or name in self.read.get(label, ())]
+        return [
+            module
+            for label, module in self.modules.items()
+            if (label == "" and dialect == "book")
+            or name in vars(module)
+            or name in self.read.get(label, ())
+        ]
 
     def place(self, given):
         """Sets every name of the table that the case gives; the names set."""
         placed = set()
         for name, spec in self.names.items():
             value = at(given, spec["path"])
-            if value is None and "empty" in spec and at(given, spec["path"].rsplit(".", 1)[0]) is not None:
+            if (
+                value is None
+                and "empty" in spec
+                and at(given, spec["path"].rsplit(".", 1)[0]) is not None
+            ):
                 value = spec["empty"]
             targets = self.targets(name, spec["dialect"]) if value is not None else []
             for module in targets:
                 if spec.get("kind") == "canvas":  # the demos' canvas: its size, set in place
                     set_size(module, name, value)
-                elif spec.get("kind") == "scene" and isinstance(getattr(module, name, None), (list, tuple)):
+                elif spec.get("kind") == "scene" and isinstance(
+                    getattr(module, name, None), (list, tuple)
+                ):
                     # a scene kept as the list of its spheres: the case's spheres
                     setattr(module, name, self.built("spheres", value.get("spheres", []), given))
                 else:
@@ -635,8 +717,10 @@ def run_case(request, chapter):
     adapter = chapter.adapter
     try:
         placed = chapter.set_up(request["function"], given)
-        calls = [[argument(adapter, spec, decoded(call)) for spec in request["parameters"]]
-                 for call in request["calls"]]
+        calls = [
+            [argument(adapter, spec, decoded(call)) for spec in request["parameters"]]
+            for call in request["calls"]
+        ]
     except BaseException as error:
         return {"adapter_failed": one_line(error)}
     function = getattr(chapter.main, request["function"])
@@ -669,6 +753,7 @@ def argument(adapter, spec, call):
 # Answers as plain data: numbers, strings, lists and records, nothing of the student's
 # types; infinities and NaN as the strings JSON lacks them for.
 
+
 def plain(value, budget, depth=0):
     budget[0] -= 1
     if budget[0] < 0 or depth > 12:
@@ -676,28 +761,50 @@ def plain(value, budget, depth=0):
     if value is None or isinstance(value, (bool, str)):
         return value[:200] if isinstance(value, str) else value
     if isinstance(value, (int, float)):
-        value = float(value) if not isinstance(value, int) or abs(value) > 2 ** 53 else value
+        value = float(value) if not isinstance(value, int) or abs(value) > 2**53 else value
         if isinstance(value, float) and not math.isfinite(value):
             return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
         return value
     if hasattr(value, "tolist") and callable(value.tolist):  # numpy
         return plain(value.tolist(), budget, depth + 1)
     if isinstance(value, dict) or isinstance(value, Record):
-        return {str(k): plain(v, budget, depth + 1) for k, v in list(value.items())[:1000]
-                if not callable(v)}
+        return {
+            str(k): plain(v, budget, depth + 1)
+            for k, v in list(value.items())[:1000]
+            if not callable(v)
+        }
     if isinstance(value, Texture):
         return {"width": value.width, "height": value.height}
-    if isinstance(value, (list, tuple, range)) or (hasattr(value, "__iter__") and hasattr(value, "__len__")):
+    if isinstance(value, (list, tuple, range)) or (
+        hasattr(value, "__iter__") and hasattr(value, "__len__")
+    ):
         if len(value) > MAX_ITEMS:
             raise ValueError("too large")
         return [plain(each, budget, depth + 1) for each in value]
     fields = {}
-    for name in ("x", "y", "z", "w", "h", "r", "g", "b", "center", "radius", "v", "triangles", "vertices"):
+    for name in (
+        "x",
+        "y",
+        "z",
+        "w",
+        "h",
+        "r",
+        "g",
+        "b",
+        "center",
+        "radius",
+        "v",
+        "triangles",
+        "vertices",
+    ):
         if hasattr(value, name) and not callable(getattr(value, name)):
             fields[name] = plain(getattr(value, name), budget, depth + 1)
     if not fields and hasattr(value, "__dict__"):
-        fields = {k: plain(v, budget, depth + 1) for k, v in list(vars(value).items())[:1000]
-                  if not k.startswith("_") and not callable(v)}
+        fields = {
+            k: plain(v, budget, depth + 1)
+            for k, v in list(vars(value).items())[:1000]
+            if not k.startswith("_") and not callable(v)
+        }
     if fields:
         return fields
     return f"a {type(value).__name__}"
@@ -717,9 +824,12 @@ def made_by(make, values, check):
     """What the chapter's own type `make` makes of values (as many as it takes), or None
     unless it holds them (check)."""
     try:
-        takes = [p for p in inspect.signature(make).parameters.values()
-                 if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
-        made = make(*values[:len(takes)])
+        takes = [
+            p
+            for p in inspect.signature(make).parameters.values()
+            if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+        ]
+        made = make(*values[: len(takes)])
     except Exception:  # not a type this can make: the book's records instead
         return None
     return made if check(made) else None
@@ -732,6 +842,7 @@ def field(value, name):
 def own_maker(make, book, fields):
     """The book's values (x, y, z) or (r, g, b) made by the chapter's own class, where
     what it makes holds them (as fields of those names, or by index); else the book's."""
+
     def holds(made, values):
         try:
             return all(field(made, name) == value for name, value in zip(fields, values))
@@ -744,6 +855,7 @@ def own_maker(make, book, fields):
     def maker(value):
         values = numbers(value)
         return made_by(make, list(values), lambda made: holds(made, values)) or book(value)
+
     return maker
 
 
@@ -753,14 +865,25 @@ def in_chapter_style(adapter, main):
     has one that takes (x, y, z) or (r, g, b) and keeps them; its spheres made by the
     chapter's own Sphere where it has one that takes (center, radius, color, specular,
     reflective) and keeps them."""
-    numpy = next((v for v in vars(main).values()
-                  if isinstance(v, types.ModuleType) and v.__name__ == "numpy"), None)
+    numpy = next(
+        (
+            v
+            for v in vars(main).values()
+            if isinstance(v, types.ModuleType) and v.__name__ == "numpy"
+        ),
+        None,
+    )
     if numpy is not None:
         adapter.vector = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
         adapter.color = staticmethod(lambda value: numpy.array(numbers(value), dtype=float))
-    for kind, names, fields in (("vector", ("Vec", "Vec3", "Vector", "Vector3", "Vertex"), "xyz"),
-                                ("color", ("Color", "Colour", "RGB"), "rgb")):
-        make = next((getattr(main, name) for name in names if isinstance(getattr(main, name, None), type)), None)
+    for kind, names, fields in (
+        ("vector", ("Vec", "Vec3", "Vector", "Vector3", "Vertex"), "xyz"),
+        ("color", ("Color", "Colour", "RGB"), "rgb"),
+    ):
+        make = next(
+            (getattr(main, name) for name in names if isinstance(getattr(main, name, None), type)),
+            None,
+        )
         if make is not None and numpy is None:
             setattr(adapter, kind, staticmethod(own_maker(make, getattr(adapter, kind), fields)))
     own = getattr(main, "Sphere", None)
@@ -769,15 +892,24 @@ def in_chapter_style(adapter, main):
 
         def sphere(value):
             default = book(value)
-            values = [default.center, default.radius, default.color, default.specular, default.reflective]
+            values = [
+                default.center,
+                default.radius,
+                default.color,
+                default.specular,
+                default.reflective,
+            ]
 
             def keeps(made):
                 try:
-                    return field(made, "radius") == default.radius and \
-                        list(field(made, "center")) == list(default.center)
+                    return field(made, "radius") == default.radius and list(
+                        field(made, "center")
+                    ) == list(default.center)
                 except Exception:
                     return False
+
             return made_by(own, values, keeps) or default
+
         adapter.sphere = staticmethod(sphere)
     return adapter
 
@@ -786,13 +918,34 @@ def adapted(adapter_module, main):
     """The default adapter, in the chapter's style, with the functions of the student's
     adapter in its place; their setup and result, when they give them, as own_setup and
     own_result."""
+
     class Adapter(DefaultAdapter):
         pass
+
     in_chapter_style(Adapter, main)
     if adapter_module is not None:
-        for name in ("vector", "vectors", "point", "color", "booleans", "matrix", "plane",
-                     "transform", "triangle", "model", "texture", "tangent_basis", "sphere",
-                     "light", "spheres", "lights", "scene", "camera", "rows", "depth_buffer"):
+        for name in (
+            "vector",
+            "vectors",
+            "point",
+            "color",
+            "booleans",
+            "matrix",
+            "plane",
+            "transform",
+            "triangle",
+            "model",
+            "texture",
+            "tangent_basis",
+            "sphere",
+            "light",
+            "spheres",
+            "lights",
+            "scene",
+            "camera",
+            "rows",
+            "depth_buffer",
+        ):
             if callable(getattr(adapter_module, name, None)):
                 setattr(Adapter, name, staticmethod(getattr(adapter_module, name)))
         if callable(getattr(adapter_module, "setup", None)):
@@ -803,6 +956,7 @@ def adapted(adapter_module, main):
 
 
 # A figure drawn with the chapter's own functions (a chapter page's Draw).
+
 
 def channel(value):
     """A colour channel as a canvas keeps it: clamped to 0..255, rounded half up."""
@@ -836,12 +990,12 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
             pixel = bytes(channel(number(each)) for each in rgb[:3]) + b"\xff"
             if side == 1:
                 at = (row * width + column) * 4
-                pixels[at:at + 4] = pixel
+                pixels[at : at + 4] = pixel
                 return
             run = min(side, width - column)
             for line in range(max(0, row - side + 1), row + 1):
                 at = (line * width + column) * 4
-                pixels[at:at + 4 * run] = pixel * run
+                pixels[at : at + 4 * run] = pixel * run
 
     given = decoded(recipe["given"])
     given["canvas"]["PutPixel"] = put
@@ -862,8 +1016,12 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
 
         def ray(x, y):
             D = through(x, y)
-            return (trace(origin, D, rays["t_min"], math.inf) if depth is None
-                    else trace(origin, D, rays["t_min"], math.inf, depth))
+            return (
+                trace(origin, D, rays["t_min"], math.inf)
+                if depth is None
+                else trace(origin, D, rays["t_min"], math.inf, depth)
+            )
+
         if preview is not None:
             for x in range(-width // 2, width // 2, 4):
                 for y in range(-height // 2, height // 2, 4):
@@ -875,6 +1033,7 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
             if x % 20 == 0:
                 progress((x + width / 2) / width)
     else:
+
         def call(name, args):
             values = []
             for parameter, kind in kinds.get(name, []):
@@ -885,8 +1044,13 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
                         notes.extend(fraction_note(value["call"], made))
                     values.append(made)
                 else:
-                    values.append(number(value) if kind == "number" else getattr(chapter.adapter, kind)(decoded(value)))
+                    values.append(
+                        number(value)
+                        if kind == "number"
+                        else getattr(chapter.adapter, kind)(decoded(value))
+                    )
             return theirs(name)(*values)
+
         for name, args in recipe["calls"]:
             call(name, args)
     return bytes(pixels)
@@ -907,8 +1071,10 @@ def fraction_note(name, point):
         return []
     if all(isinstance(v, (int, float)) and float(v).is_integer() for v in (x, y)):
         return []
-    return [f"your {name} returned the canvas point ({x}, {y}): ours are whole pixels, truncated toward zero "
-            "(docs/conventions.md, \"Rounding in the rasterizer\"), and your drawing functions draw from other end points"]
+    return [
+        f"your {name} returned the canvas point ({x}, {y}): ours are whole pixels, truncated toward zero "
+        '(docs/conventions.md, "Rounding in the rasterizer"), and your drawing functions draw from other end points'
+    ]
 
 
 # The chapter pages' runner (tools/site/python_worker.js runs this module in Pyodide, in a
@@ -943,7 +1109,9 @@ def page_load(code, file, functions, names):
     except LoadError as error:
         return json.dumps({"load_error": str(error).replace(f"your code {path}", "your code")})
     sys.modules.setdefault(main_module.__name__, main_module)
-    page_chapter = Chapter(main_module, folder, adapted(None, main_module), json.loads(names), json.loads(functions))
+    page_chapter = Chapter(
+        main_module, folder, adapted(None, main_module), json.loads(names), json.loads(functions)
+    )
     return json.dumps({"loaded": page_chapter.facts})
 
 
@@ -971,6 +1139,7 @@ def page_draw(recipe, kinds, progress, preview):
 
 # The loop: a case at a time, each in a child process forked from this one.
 
+
 def in_child(request, chapter, write_end):
     """Runs in the forked child: the case, its answer written to the parent's pipe."""
     os.setpgid(0, 0)  # the child and what it starts: ended together after the case
@@ -992,7 +1161,7 @@ def in_child(request, chapter, write_end):
     data = text.encode()
     while data:
         try:
-            data = data[os.write(write_end, data):]
+            data = data[os.write(write_end, data) :]
         except OSError:
             break
     os._exit(0)
@@ -1002,7 +1171,10 @@ def capture_printing():
     """What the case prints (print, sys.stderr, a C library's output), kept in a
     temporary file (the sandbox's /tmp, a tmpfs of a stated size) in place of the standard
     output and error; its descriptor."""
-    for stream in (sys.stdout, sys.stderr):  # what the module printed as it loaded is not this case's
+    for stream in (
+        sys.stdout,
+        sys.stderr,
+    ):  # what the module printed as it loaded is not this case's
         try:
             stream.flush()
         except Exception:
@@ -1085,7 +1257,9 @@ def exit_text(status):
 
 
 def main():
-    if sys.argv[1:2] == ["--declared"]:  # the file's own account, for the checker: nothing of it runs
+    if sys.argv[1:2] == [
+        "--declared"
+    ]:  # the file's own account, for the checker: nothing of it runs
         with open(sys.argv[2], encoding="utf-8", errors="replace") as source:
             print(json.dumps(declared_functions(source.read())))
         return

@@ -99,4 +99,6 @@ def TraceRay(O, D, t_min, t_max):
     P = added(O, scaled(closest_t, D))  # the intersection
     N = subtract(P, closest_sphere.center)  # the sphere's normal there
     N = scaled(1 / length(N), N)
-    return scaled(ComputeLighting(P, N, scaled(-1, D), closest_sphere.specular), closest_sphere.color)
+    return scaled(
+        ComputeLighting(P, N, scaled(-1, D), closest_sphere.specular), closest_sphere.color
+    )

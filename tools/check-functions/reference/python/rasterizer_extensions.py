@@ -177,11 +177,15 @@ def ClipTriangle(triangle, plane, vertices):
     first, second, third = (triangle.v[(k + n) % 3] for n in range(3))
     if count == 1:
         A, B, C = first, second, third
-        return [types.SimpleNamespace(v=[A, NewVertex(A, B), NewVertex(A, C)], color=triangle.color)]
+        return [
+            types.SimpleNamespace(v=[A, NewVertex(A, B), NewVertex(A, C)], color=triangle.color)
+        ]
     C, A, B = first, second, third
     A_prime, B_prime = NewVertex(A, C), NewVertex(B, C)
-    return [types.SimpleNamespace(v=[A, B, A_prime], color=triangle.color),
-            types.SimpleNamespace(v=[A_prime, B, B_prime], color=triangle.color)]
+    return [
+        types.SimpleNamespace(v=[A, B, A_prime], color=triangle.color),
+        types.SimpleNamespace(v=[A_prime, B, B_prime], color=triangle.color),
+    ]
 
 
 # "Clipping Whole Objects": the centre of the vertices, and the farthest one's distance.
@@ -209,8 +213,9 @@ def IsBackFacing(A, B, C, camera):
 # Listing 12-1: the object keeps the triangles that face the camera.
 def CullBackFaces(object, camera):
     V = object.vertices
-    object.triangles = [T for T in object.triangles
-                        if not IsBackFacing(V[T.v[0]], V[T.v[1]], V[T.v[2]], camera)]
+    object.triangles = [
+        T for T in object.triangles if not IsBackFacing(V[T.v[0]], V[T.v[1]], V[T.v[2]], camera)
+    ]
 
 
 # "Flat Shading": the unit normal of the triangle's front face.
@@ -263,8 +268,9 @@ def DecodeNormal(texel):
 # tangent space.
 def ApplyNormalMap(n, basis, N):
     T = Normalized([t - N[i] * Dot(N, basis.T) for i, t in enumerate(basis.T)])
-    B = Normalized([b - N[i] * Dot(N, basis.B) - T[i] * Dot(T, basis.B)
-                    for i, b in enumerate(basis.B)])
+    B = Normalized(
+        [b - N[i] * Dot(N, basis.B) - T[i] * Dot(T, basis.B) for i, b in enumerate(basis.B)]
+    )
     return Normalized([T[i] * n[0] + B[i] * n[1] + N[i] * n[2] for i in range(3)])
 
 

@@ -120,8 +120,9 @@ def TraceRay(O, D, t_min, t_max, recursion_depth):
     P = added(O, scaled(closest_t, D))
     N = subtract(P, closest_sphere.center)
     N = scaled(1 / length(N), N)
-    local_color = scaled(ComputeLighting(P, N, scaled(-1, D), closest_sphere.specular),
-                         closest_sphere.color)
+    local_color = scaled(
+        ComputeLighting(P, N, scaled(-1, D), closest_sphere.specular), closest_sphere.color
+    )
 
     # At the recursion limit, or on a surface that is not reflective, we are done
     r = closest_sphere.reflective
