@@ -16,6 +16,25 @@ libjs-codemirror, copied from /usr/share/javascript/codemirror), the function ch
 core and the JavaScript runner bundled with esbuild (vendor/check.js, vendor/sources.js),
 and Pyodide for Python.
 
+The page's globals, each written once and only read elsewhere (the scripts load as
+classic scripts or workers, so these names are how they meet):
+  CGFS_SOURCES      vendor/sources.js, here: the workers' and runners' source texts;
+                    read by code_runner.js and figures_client.js
+  CGFS_CASES        vendor/cases.js, here: tests/cases/*.json; read by yourcode.js
+  CGFS_DRAWINGS     vendor/cases.js, here: tools/site/drawings.json; read by yourcode.js
+  CGFS_PYODIDE      vendor/pyodide.js, here: Pyodide's files; read (once, then
+                    dropped) by code_runner.js
+  CGFS_FIGURES_OF   <chapter>/figures-source.js, here: the chapter's WebAssembly module;
+                    read by chapter.js, index.js and yourcode.js
+  CGFS_MODELS       models/<name>.js, here: the models' files; read by models.js
+  CGFS_CHECK        vendor/check.js, by check_entry.mjs (the checker's core, bundled
+                    by esbuild); read by code_runner.js, editor_marks.js, yourcode.js
+  CGFS_MODULE       the figures worker's first line, by figures_client.js; read by
+                    figures_worker.js
+  CGFS_PYODIDE_LOADER, CGFS_PYODIDE_ASM
+                    inside the Python worker, by python_worker.js from CGFS_PYODIDE
+                    (PYODIDE_SCRIPTS below); read there
+
 Every page a README links to is made too (the docs, the golden images, the catalogues
 of mistakes, ...), so links work inside the site; a link to a file the repository does
 not have stops the build with one line. Exit status 0, or 1 with one line on stderr.
