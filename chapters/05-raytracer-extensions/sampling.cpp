@@ -30,20 +30,25 @@ Color Clamped(const Color& color) {
   return glm::clamp(color, 0.0, 255.0);
 }
 
-// Per pixel storage in canvas coordinates.
+// A value per pixel of the canvas, found by chapter 1's mapping (Canvas::ToScreen), so
+// that the grid and the canvas agree about which pixel (x, y) is.
 template <typename T>
 class PixelGrid {
  public:
   PixelGrid(const Canvas& canvas, T value)
-      : width_(canvas.Width()), height_(canvas.Height()), cells_(width_ * height_, value) {}
-  bool Contains(int x, int y) const {
-    return -width_ / 2 <= x && x < width_ / 2 && -height_ / 2 <= y && y < height_ / 2;
+      : canvas_(canvas),
+        cells_(static_cast<std::size_t>(canvas.Width()) * static_cast<std::size_t>(canvas.Height()),
+               value) {}
+  bool Contains(int x, int y) const { return canvas_.ToScreen(x, y).has_value(); }
+  // The cell of pixel (x, y), which must be on the canvas.
+  T& operator()(int x, int y) {
+    const cgfs::ScreenPoint screen = *canvas_.ToScreen(x, y);
+    return cells_[static_cast<std::size_t>(screen.row) * static_cast<std::size_t>(canvas_.Width()) +
+                  static_cast<std::size_t>(screen.column)];
   }
-  T& operator()(int x, int y) { return cells_[(y + height_ / 2) * width_ + (x + width_ / 2)]; }
 
  private:
-  int width_;
-  int height_;
+  const Canvas& canvas_;
   std::vector<T> cells_;
 };
 

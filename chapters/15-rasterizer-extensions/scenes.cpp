@@ -274,8 +274,8 @@ void DrawCubeMap(const CubeMap& cube_map, Canvas& canvas) {
     const Texture& texture = cube_map.faces[static_cast<std::size_t>(face)];
     for (int j = 0; j < size; ++j) {
       for (int i = 0; i < size; ++i) {
-        canvas.PutPixel(-canvas.Width() / 2 + column * size + i,
-                        canvas.Height() / 2 - 1 - (row * size + j), texture.At(i, j));
+        const cgfs::CanvasPoint point = canvas.ToCanvas(column * size + i, row * size + j);
+        canvas.PutPixel(point.x, point.y, texture.At(i, j));
       }
     }
   };
@@ -291,7 +291,8 @@ void DrawCubeMap(const CubeMap& cube_map, Canvas& canvas) {
 void DrawTexture(const Texture& texture, Canvas& canvas) {
   for (int row = 0; row < canvas.Height(); ++row) {
     for (int column = 0; column < canvas.Width(); ++column) {
-      canvas.PutPixel(column - canvas.Width() / 2, canvas.Height() / 2 - 1 - row,
+      const cgfs::CanvasPoint point = canvas.ToCanvas(column, row);
+      canvas.PutPixel(point.x, point.y,
                       GetTexelNearest(texture, (column + 0.5) * texture.width / canvas.Width(),
                                       (row + 0.5) * texture.height / canvas.Height()));
     }

@@ -1,7 +1,10 @@
 #include "cgfs/tally.h"
 
 #include <numeric>
+#include <optional>
 #include <stdexcept>
+
+#include "cgfs/screen.h"
 
 namespace cgfs {
 
@@ -59,15 +62,14 @@ cgfs::Count Tallying::Total() const {
   return std::accumulate(counts_.begin(), counts_.end(), cgfs::Count{0}) + elsewhere_.load();
 }
 
-// The canvas's mapping (Canvas::ToScreen): column Cw/2 + x, row Ch/2 - y - 1.
+// The canvas's mapping (cgfs/screen.h), so that a count is where its pixel is.
 cgfs::Count* Tallying::Cell(int x, int y) {
-  const int column = width_ / 2 + x;
-  const int row = height_ / 2 - y - 1;
-  if (column < 0 || column >= width_ || row < 0 || row >= height_) {
+  const std::optional<ScreenPoint> screen = CanvasToScreen(x, y, width_, height_);
+  if (!screen) {
     return nullptr;
   }
-  return &counts_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                  static_cast<std::size_t>(column)];
+  return &counts_[static_cast<std::size_t>(screen->row) * static_cast<std::size_t>(width_) +
+                  static_cast<std::size_t>(screen->column)];
 }
 
 void Tallying::Add(int x, int y, cgfs::Count events) {

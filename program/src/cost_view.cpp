@@ -39,8 +39,8 @@ namespace {
 constexpr cgfs::Count kLargestScale = 1 << 20;
 
 void Put(Canvas& canvas, int column, int row, Rgb8 value) {
-  canvas.PutPixel(column - canvas.Width() / 2, canvas.Height() / 2 - 1 - row,
-                  {value.r, value.g, value.b});
+  const cgfs::CanvasPoint point = canvas.ToCanvas(column, row);
+  canvas.PutPixel(point.x, point.y, {value.r, value.g, value.b});
 }
 
 // The count the strip shows at `column`: a whole one per block for a few steps, else

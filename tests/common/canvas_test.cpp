@@ -27,6 +27,19 @@ TEST_CASE("pixels just outside the canvas have no screen position", "[canvas]") 
   CHECK_FALSE(canvas.ToScreen(0, -301));
 }
 
+TEST_CASE("ToCanvas undoes ToScreen at every pixel of a canvas that is not square",
+          "[canvas]") {
+  const Canvas canvas(6, 4);
+  CHECK(canvas.ToCanvas(0, 0) == cgfs::CanvasPoint{-3, 1});  // the top-left corner
+  CHECK(canvas.ToCanvas(5, 3) == cgfs::CanvasPoint{2, -2});  // the bottom-right corner
+  for (int row = 0; row < canvas.Height(); ++row) {
+    for (int column = 0; column < canvas.Width(); ++column) {
+      const cgfs::CanvasPoint point = canvas.ToCanvas(column, row);
+      CHECK(canvas.ToScreen(point.x, point.y) == ScreenPoint{column, row});
+    }
+  }
+}
+
 TEST_CASE("PutPixel writes where ToScreen says and ignores pixels off the canvas", "[canvas]") {
   Canvas canvas(600, 600, cgfs::kWhite);
   canvas.PutPixel(-300, 299, cgfs::kRed);

@@ -11,6 +11,7 @@
 
 #include "cgfs/color.h"
 #include "cgfs/image.h"
+#include "cgfs/screen.h"
 #include "cgfs/tally.h"
 
 namespace cgfs {
@@ -18,13 +19,6 @@ namespace cgfs {
 // Every PutPixel, on the canvas or off it (the views of where the work goes, and the
 // test that a render loop visits each pixel once: cgfs/tally.h).
 inline constexpr Counter kPixelsPut{"PutPixel calls"};
-
-// A position in the image in memory order (column from the left, row from the top).
-struct ScreenPoint {
-  int column = 0;
-  int row = 0;
-  friend bool operator==(const ScreenPoint&, const ScreenPoint&) = default;
-};
 
 class Canvas {
  public:
@@ -34,15 +28,14 @@ class Canvas {
   int Width() const { return image_.Width(); }
   int Height() const { return image_.Height(); }
 
-  // Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (docs/conventions.md, "The canvas": the book's
-  // Ch/2 - y would put y = Ch/2 on row 0 and y = -Ch/2 outside). Empty for pixels off
-  // the canvas.
+  // Where pixel (x, y) is in the image: Sx = Cw/2 + x, Sy = Ch/2 - y - 1 (chapter 1's
+  // mapping, cgfs/screen.h). Empty for pixels off the canvas.
   std::optional<ScreenPoint> ToScreen(int x, int y) const {
-    const ScreenPoint screen{Width() / 2 + x, Height() / 2 - y - 1};
-    if (!image_.Contains(screen.column, screen.row)) {
-      return std::nullopt;
-    }
-    return screen;
+    return CanvasToScreen(x, y, Width(), Height());
+  }
+  // The inverse: the canvas point at (column, row) of the image.
+  CanvasPoint ToCanvas(int column, int row) const {
+    return ScreenToCanvas(column, row, Width(), Height());
   }
 
   // The book's only drawing primitive: clamps and rounds the colour, and
