@@ -1,31 +1,18 @@
 #include "options.h"
 
+#include <cstddef>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "program/arguments.h"
+#include "program/book_model.h"
 #include "program/error.h"
-#include "program/model_file.h"
 
 namespace {
 
 constexpr int kMaxThreads = 256;
-
-// OBJ's right-handed coordinates in the book's left-handed ones.
-Vec3 BookCoordinates(const glm::dvec3& v) {
-  return {v.x, v.y, -v.z};
-}
-
-// Reads --model's file into `settings`, saying what was left out of it.
-void ReadModel(const std::string& file, ChapterSettings& settings) {
-  const cgfs::ModelFile model = cgfs::ReadModelFile(file);
-  for (const std::string& warning : model.warnings) {
-    cgfs::Warn(file + ": " + warning);
-  }
-  settings.model = std::make_shared<const std::vector<Triangle>>(TrianglesFromFile(model));
-  settings.model_name = std::filesystem::path(file).filename().string();
-}
 
 }  // namespace
 
@@ -57,23 +44,20 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
     }
     settings.optimizations = chosen;
     if (!given->model.empty()) {
-      ReadModel(given->model, settings);
+      settings.model = std::make_shared<const std::vector<Triangle>>(
+          TrianglesFromFile(cgfs::ReadBookModel(given->model)));
+      settings.model_name = std::filesystem::path(given->model).filename().string();
     }
   });
 }
 
-std::vector<Triangle> TrianglesFromFile(const cgfs::ModelFile& file) {
+std::vector<Triangle> TrianglesFromFile(const cgfs::BookModel& file) {
   std::vector<Triangle> triangles;
-  for (const cgfs::ModelFile::Face& face : file.faces) {
-    const Color color = face.material >= 0
-                            ? file.materials[static_cast<std::size_t>(face.material)].diffuse
-                            : cgfs::ModelFile::Material{}.diffuse;
-    const auto corner = [&](int k) {
-      return BookCoordinates(file.positions[static_cast<std::size_t>(
-          face.corners[static_cast<std::size_t>(k)].position)]);
+  for (const cgfs::BookModel::Triangle& T : file.triangles) {
+    const auto corner = [&](std::size_t k) {
+      return file.vertices[static_cast<std::size_t>(T.v[k])];
     };
-    // Its corners the other way round, so that N = (B - A) x (C - A) still points out.
-    triangles.push_back(Triangle{corner(0), corner(2), corner(1), color, 100});
+    triangles.push_back(Triangle{corner(0), corner(1), corner(2), T.color, 100});
   }
   return triangles;
 }

@@ -14,7 +14,7 @@ namespace CLI {
 class App;
 }
 namespace cgfs {
-struct ModelFile;
+struct BookModel;
 }
 
 // What the chapter's figures are made with.
@@ -26,14 +26,11 @@ struct ChapterSettings {
 };
 
 // Declares --optimizations, --threads and --model on `app`; once the command line is
-// read, the optimisations they name and the model (read by cgfs::ReadModelFile,
-// program/model_file.h) are in `settings`, and what was left out of the model has been
+// read, the optimisations they name and the model (read by cgfs::ReadBookModel,
+// program/book_model.h) are in `settings`, and what was left out of the model has been
 // said in one warning line each.
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings);
 
-// A model file's triangles as the chapter's Triangle objects, each in its material's
-// colour (Kd), a little shiny. OBJ's coordinates are right-handed and the book's
-// left-handed (the camera looks along +z, x to its right, y up): z is negated, which
-// turns the model's front (+z in OBJ) towards the camera, and each triangle's corners
-// are listed the other way round, so that its N = (B - A) x (C - A) still points out.
-std::vector<Triangle> TrianglesFromFile(const cgfs::ModelFile& file);
+// A model file, in the book's coordinates (cgfs::InBookCoordinates), as the chapter's
+// Triangle objects, each in its material's colour (Kd), a little shiny.
+std::vector<Triangle> TrianglesFromFile(const cgfs::BookModel& file);

@@ -1,21 +1,11 @@
 #include "options.h"
 
-#include <array>
+#include <filesystem>
 #include <memory>
 #include <string>
 
 #include "program/arguments.h"
-#include "program/error.h"
-#include "program/model_file.h"
-
-namespace {
-
-// OBJ's right-handed coordinates in the book's left-handed ones.
-Vec3 BookCoordinates(const glm::dvec3& v) {
-  return {v.x, v.y, -v.z};
-}
-
-}  // namespace
+#include "program/book_model.h"
 
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
   auto file = std::make_shared<std::string>();
@@ -27,29 +17,15 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
     if (file->empty()) {
       return;
     }
-    const cgfs::ModelFile model = cgfs::ReadModelFile(*file);
-    for (const std::string& warning : model.warnings) {
-      cgfs::Warn(*file + ": " + warning);
-    }
-    settings.model = std::make_shared<const Model>(ModelFromFile(model));
+    settings.model = std::make_shared<const Model>(ModelFromFile(cgfs::ReadBookModel(*file)));
     settings.model_name = std::filesystem::path(*file).filename().string();
   });
 }
 
-Model ModelFromFile(const cgfs::ModelFile& file) {
-  Model model;
-  for (const glm::dvec3& position : file.positions) {
-    model.vertices.push_back(BookCoordinates(position));
-  }
-  for (const cgfs::ModelFile::Face& face : file.faces) {
-    // Its corners the other way round (see options.h).
-    const std::array<cgfs::ModelFile::Corner, 3> corners = {face.corners[0], face.corners[2],
-                                                            face.corners[1]};
-    const Color color = face.material >= 0
-                            ? file.materials[static_cast<std::size_t>(face.material)].diffuse
-                            : cgfs::ModelFile::Material{}.diffuse;
-    Triangle triangle{{corners[0].position, corners[1].position, corners[2].position}, color};
-    model.triangles.push_back(triangle);
+Model ModelFromFile(const cgfs::BookModel& file) {
+  Model model{file.vertices, {}};
+  for (const cgfs::BookModel::Triangle& T : file.triangles) {
+    model.triangles.push_back({T.v, T.color});
   }
   return model;
 }

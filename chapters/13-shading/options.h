@@ -12,7 +12,7 @@ namespace CLI {
 class App;
 }
 namespace cgfs {
-struct ModelFile;
+struct BookModel;
 }
 
 // What the chapter's figures are made with.
@@ -23,17 +23,11 @@ struct ChapterSettings {
 };
 
 // Declares --model on `app`; once the command line is read, the model (read by
-// cgfs::ReadModelFile, program/model_file.h) is in `settings`, and what was left out of
+// cgfs::ReadBookModel, program/book_model.h) is in `settings`, and what was left out of
 // it has been said in one warning line each.
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings);
 
-// A model file's triangles as the chapter's Model. OBJ's coordinates are right-handed
-// and the book's left-handed (the camera looks along +z, x to its right, y up): z is
-// negated, which turns the model's front (+z in OBJ) towards the camera, and each
-// triangle's corners are listed the other way round, so that (V1 - V0) x (V2 - V0)
-// still points outwards. Each triangle has its material's colour (Kd), and at each
-// corner the file's normal, or where it gives none (or one of no length) the
-// triangle's own ("Normals"). The model is closed ("Back Face Culling") if every edge
-// joins exactly two triangles, which go along it in opposite directions: then no back
-// face can be seen from outside.
-Model ModelFromFile(const cgfs::ModelFile& file);
+// A model file, in the book's coordinates (cgfs::InBookCoordinates), as the chapter's
+// Model: each triangle in its material's colour (Kd), with a normal at each corner
+// ("Normals"), the model closed if the file's surface is ("Back Face Culling").
+Model ModelFromFile(const cgfs::BookModel& file);

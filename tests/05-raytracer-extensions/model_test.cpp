@@ -8,7 +8,7 @@
 
 #include "golden.h"
 #include "options.h"
-#include "program/model_file.h"
+#include "program/book_model.h"
 #include "scenes.h"
 
 namespace {
@@ -17,7 +17,7 @@ ChapterSettings WithHouse(const Optimizations& optimizations) {
   ChapterSettings settings;
   settings.optimizations = optimizations;
   settings.model = std::make_shared<const std::vector<Triangle>>(
-      TrianglesFromFile(cgfs::ReadModelFile(CGFS_MODELS_DIR "/house.obj")));
+      TrianglesFromFile(cgfs::ReadBookModel(CGFS_MODELS_DIR "/house.obj")));
   settings.model_name = "house.obj";
   return settings;
 }

@@ -9,7 +9,7 @@
 #include "figure_checks.h"
 #include "golden.h"
 #include "options.h"
-#include "program/model_file.h"
+#include "program/book_model.h"
 #include "scenes.h"
 
 using cgfs::test::Agreement;
@@ -30,7 +30,7 @@ cgfs::ModelFile House() {
 
 TEST_CASE("a model file's triangles face outwards in the book's coordinates, and it is closed",
           "[model]") {
-  const Model house = ModelFromFile(House());
+  const Model house = ModelFromFile(cgfs::InBookCoordinates(House()));
   REQUIRE(house.triangles.size() == 28);
   CHECK(house.closed);
   // The walls and the roof (the first 16 triangles) around the house's middle; the
@@ -64,7 +64,7 @@ TEST_CASE("a model drawn with the depth buffer and culling shows what a ray meet
     face.material = z > 1e-9 ? 0 : z < -1e-9 ? 1 : 2;
   }
   ChapterSettings settings;
-  settings.model = std::make_shared<const Model>(ModelFromFile(file));
+  settings.model = std::make_shared<const Model>(ModelFromFile(cgfs::InBookCoordinates(file)));
   settings.model_name = "house.obj";
   const Scene scene = SceneModel(*settings.model);
   const auto cast = CastCameraImage(CastSceneOf(scene), CastCameraOf(scene), 600, 600);

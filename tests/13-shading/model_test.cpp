@@ -5,7 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "options.h"
-#include "program/model_file.h"
+#include "program/book_model.h"
 
 namespace {
 
@@ -20,7 +20,7 @@ Vec3 OwnNormal(const Model& model, const Triangle& T) {
 TEST_CASE("a model file's normals are turned with its coordinates", "[model]") {
   // The house's faces are flat and its file gives each face's normal: every corner's
   // normal must be its triangle's own, which points outwards.
-  const Model house = ModelFromFile(cgfs::ReadModelFile(CGFS_MODELS_DIR "/house.obj"));
+  const Model house = ModelFromFile(cgfs::ReadBookModel(CGFS_MODELS_DIR "/house.obj"));
   for (const Triangle& T : house.triangles) {
     for (const Vec3& N : T.normals) {
       CHECK(glm::dot(N, OwnNormal(house, T)) == Approx(1).epsilon(1e-6));
@@ -36,7 +36,7 @@ TEST_CASE("without normals in the file, each corner has its triangle's own", "[m
       corner.normal = -1;
     }
   }
-  const Model house = ModelFromFile(file);
+  const Model house = ModelFromFile(cgfs::InBookCoordinates(file));
   for (const Triangle& T : house.triangles) {
     for (const Vec3& N : T.normals) {
       CHECK(N == OwnNormal(house, T));

@@ -2,11 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <filesystem>
 
 #include "cases.h"
 #include "checks.h"
-#include "program/image_files.h"
 #include "scenes.h"
 
 using Catch::Detail::Approx;
@@ -165,14 +163,6 @@ TEST_CASE("TexelsPerPixel: the faster of the two directions, in texels", "[mipma
   CHECK(TexelsPerPixel({1.0 / 128, 0}, {0, 1.0 / 128}, texture) == Approx(2));
   CHECK(TexelsPerPixel({1.0 / 128, 0}, {0, 1.0 / 16}, texture) == Approx(16));
   CHECK(TexelsPerPixel({3.0 / 256, 4.0 / 256}, {0, 0}, texture) == Approx(5));
-}
-
-TEST_CASE("LoadTexture refuses a picture too large to keep as a texture", "[texture]") {
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / "cgfs-texture-test-2049x1.png";
-  cgfs::WriteImage(cgfs::Image(2049, 1), file);
-  CHECK_THROWS_WITH(LoadTexture(file), Catch::Contains("2049x1, too large for a texture"));
-  std::filesystem::remove(file);
 }
 
 TEST_CASE("every mip level is read at the same place of the texture", "[mipmap]") {

@@ -27,8 +27,7 @@ TEST_CASE("pixels just outside the canvas have no screen position", "[canvas]") 
   CHECK_FALSE(canvas.ToScreen(0, -301));
 }
 
-TEST_CASE("ToCanvas undoes ToScreen at every pixel of a canvas that is not square",
-          "[canvas]") {
+TEST_CASE("ToCanvas undoes ToScreen at every pixel of a canvas that is not square", "[canvas]") {
   const Canvas canvas(6, 4);
   CHECK(canvas.ToCanvas(0, 0) == cgfs::CanvasPoint{-3, 1});  // the top-left corner
   CHECK(canvas.ToCanvas(5, 3) == cgfs::CanvasPoint{2, -2});  // the bottom-right corner

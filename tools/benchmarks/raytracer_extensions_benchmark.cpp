@@ -34,7 +34,7 @@
 #include "benchmark_main.h"
 #include "meshes.h"
 #include "options.h"
-#include "program/model_file.h"
+#include "program/book_model.h"
 #include "raytracer.h"
 #include "sampling.h"
 #include "scenes.h"
@@ -114,7 +114,7 @@ constexpr char kWuson[] = "/usr/share/assimp/models/OBJ/WusonOBJ.obj";
 
 std::vector<Triangle> MeshTriangles(const std::string& name) {
   if (name == "wuson") {
-    return TrianglesFromFile(cgfs::ReadModelFile(kWuson));
+    return TrianglesFromFile(cgfs::InBookCoordinates(cgfs::ReadModelFile(kWuson)));
   }
   const int around = name == "torus-10000" ? 100 : name == "torus-100000" ? 250 : 1000;
   // Tilted 55 degrees about x, as the chapter's torus-mesh figure is, so that the camera
