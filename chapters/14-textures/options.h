@@ -1,7 +1,6 @@
-// The chapter's own command-line options, --model FILE and --texture FILE, and the
-// settings they fill in: a Wavefront OBJ model of the reader's own, drawn instead of the
-// chapter's figures, and the reader's own image on the crates (or on the model) instead
-// of the project's (see scenes.h).
+// The chapter's own command-line options, --model FILE (a model of the reader's own,
+// drawn instead of the chapter's figures) and --texture FILE (an image of the reader's
+// own on the crates, or on the model: scenes.h), and the settings they fill in.
 #pragma once
 
 #include <cstddef>
@@ -10,20 +9,14 @@
 #include <vector>
 
 #include "mipmap.h"
+#include "program/arguments.h"
+#include "program/book_model.h"
 #include "scene.h"
-
-namespace CLI {
-class App;
-}
-namespace cgfs {
-struct BookModel;
-}
 
 // What the chapter's figures are made with.
 struct ChapterSettings {
-  // The reader's model (--model), or none: the chapter's own figures. A model has one
-  // texture ("Painting a Crate"): a file's model painted with several is one Model for
-  // each (cgfs::PaintedParts), each with the vertices its triangles use.
+  // The reader's model (--model), or none: the chapter's own figures. A Model has one
+  // texture ("Painting a Crate"): a model painted with several is one Model for each.
   std::shared_ptr<const std::vector<Model>> model;
   std::string model_name;  // its file's name, for the figure's caption
   // The texture on the crates, with its mip chain; none: the project's own.
@@ -32,26 +25,19 @@ struct ChapterSettings {
   std::vector<std::shared_ptr<const MipmappedTexture>> model_textures;
 };
 
-// Declares --model and --texture on `app`; once the command line is read, the texture (a
-// PNG, JPEG or PPM file of at most kMaxTextureSide a side) and the model (read by
-// cgfs::ReadBookModel, program/book_model.h) are in `settings`, and what was left out of
-// the model has been said in one warning line each. The model is painted with
-// --texture's image if there is one, otherwise with its materials' textures (map_Kd,
-// cgfs::MaterialImages). A material's texture that cannot be read leaves that
-// material's colour.
+// Declares --model and --texture on `app`; once the command line is read, the texture
+// (cgfs::ReadTextureImage) and the model (ReadBookModel, which says what it left out)
+// are in `settings`. The model is painted with --texture's image if there is one,
+// otherwise with its materials' (cgfs::MaterialImages, cgfs::PaintedParts).
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings);
 
-// A model file, in the book's coordinates (cgfs::InBookCoordinates), as the chapter's
-// Model: each triangle in its material's colour (Kd), with a normal and texture
-// coordinates at each corner, the model closed if the file's surface is ("Back Face
-// Culling").
+// A model file in the book's coordinates as the chapter's Model: each triangle in its
+// material's colour (Kd), with a normal and texture coordinates at each corner, closed
+// if the file's surface is ("Back Face Culling").
 Model ModelFromFile(const cgfs::BookModel& file);
 
-// The largest texture accepted, a side: 2048 x 2048 texels of 24 bytes are 100 MB,
-// and their mip chain a third more.
+// The largest texture, a side (2048 x 2048 texels of 24 bytes, 100 MB, and a third more
+// for its mip chain), and a model's textures together: two of the largest (past it,
+// materials keep their colours).
 inline constexpr int kMaxTextureSide = 2048;
-
-// The texels of all a model's textures together (each file counted once, however many
-// materials name it): two of the largest, 270 MB with their mip chains. A texture past
-// it leaves its materials in their colours.
 inline constexpr std::size_t kMaxModelTexels = 2048 * 2048;

@@ -1,13 +1,9 @@
 #include "options.h"
 
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "program/arguments.h"
-#include "program/book_model.h"
 
 namespace {
 
@@ -15,18 +11,16 @@ std::shared_ptr<const MipmappedTexture> MipmappedTextureOf(const cgfs::Image& im
   return std::make_shared<const MipmappedTexture>(BuildMipChain(TextureFromImage(image)));
 }
 
-// The model's parts, one per texture (cgfs::PaintedParts), each part's texture made once
-// with its mip chain and kept in `settings`.
+// The model's parts, one per texture (cgfs::PaintedParts: --texture's, the crate's, on
+// all of it if given), each texture made with its mip chain and kept in `settings`.
 void PaintModel(const cgfs::BookModel& model, const std::string& name,
                 const std::shared_ptr<const cgfs::Image>& crate, ChapterSettings& settings) {
-  std::map<const cgfs::Image*, std::shared_ptr<const MipmappedTexture>> made{
-      {crate.get(), settings.crate_texture}};
   auto parts = std::make_shared<std::vector<Model>>();
   const auto by_material =
       cgfs::MaterialImages(model.materials, name, kMaxTextureSide, kMaxModelTexels);
   for (const cgfs::PaintedPart& part : cgfs::PaintedParts(model, by_material, crate)) {
-    std::shared_ptr<const MipmappedTexture>& texture = made[part.texture.get()];
-    if (!texture && part.texture) {
+    std::shared_ptr<const MipmappedTexture> texture = settings.crate_texture;
+    if (!crate && part.texture) {
       texture = MipmappedTextureOf(*part.texture);
       settings.model_textures.push_back(texture);
     }
@@ -41,10 +35,7 @@ void PaintModel(const cgfs::BookModel& model, const std::string& name,
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
   auto file = std::make_shared<std::string>();
   auto texture_file = std::make_shared<std::string>();
-  cgfs::AddTextOption(app, "model", *file,
-                      "a Wavefront OBJ model to draw instead of the chapter's figures (the "
-                      "figure 'model', in front of the camera)",
-                      "FILE.obj");
+  cgfs::AddModelOption(app, *file, "the figure 'model'");
   cgfs::AddTextOption(app, "texture", *texture_file,
                       "a PNG, JPEG or PPM image (at most 2048 pixels a side) to paint on the "
                       "crates, or on the model, instead of the project's own crate texture",

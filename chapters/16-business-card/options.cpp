@@ -5,13 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "program/arguments.h"
-#include "program/error.h"
-
 namespace {
 
 constexpr int kMaxSamples = 4096;
-constexpr int kMaxThreads = 256;
 
 }  // namespace
 
@@ -32,17 +28,10 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
   cgfs::AddListOption(app, "optimizations", given->optimizations,
                       "none, all (default), or a comma list of threads, bound", "LIST",
                       kOptimizationNames);
-  cgfs::AddIntOption(app, "threads", given->threads,
-                     "workers when 'threads' is on (default: one per core)", "N", 1, kMaxThreads);
+  cgfs::AddThreadsOption(app, given->threads);
   cgfs::AfterParsing(app, [given, &settings] {
     Optimizations chosen = OptimizationsNamed(given->optimizations);
-    if (given->threads > 1 && chosen.threads == 1) {
-      throw cgfs::UsageError("--threads " + std::to_string(given->threads) +
-                             " needs 'threads' in --optimizations");
-    }
-    if (given->threads > 0 && chosen.threads > 1) {
-      chosen.threads = given->threads;
-    }
+    chosen.threads = cgfs::WorkersChosen(chosen.threads, given->threads);
     settings.card = {given->samples, static_cast<std::uint32_t>(given->seed), chosen};
   });
 }

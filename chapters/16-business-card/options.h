@@ -1,13 +1,9 @@
-// The chapter's own command-line options, the samples per pixel, the random seed and
-// the optimisations (see render.h and optimizations.h), and the settings they fill in;
-// and the card's size, 512x512, as the default --size.
+// The chapter's own command-line options (samples per pixel, the random seed, the
+// optimisations: render.h, optimizations.h), the settings they fill in, the card's size.
 #pragma once
 
+#include "program/arguments.h"
 #include "render.h"
-
-namespace CLI {
-class App;
-}
 
 inline constexpr std::uint32_t kDefaultSeed = 1;
 

@@ -1,20 +1,9 @@
 #include "options.h"
 
-#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "program/arguments.h"
-#include "program/book_model.h"
-#include "program/error.h"
-
-namespace {
-
-constexpr int kMaxThreads = 256;
-
-}  // namespace
 
 void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
   struct Given {
@@ -27,22 +16,12 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
                       "none, all (default: every exact one), or a comma list of threads, "
                       "cache, shadow-any-hit, shadow-coherence, bvh, subsampling",
                       "LIST", kOptimizationNames);
-  cgfs::AddIntOption(app, "threads", given->threads,
-                     "workers when 'threads' is on (default: one per core)", "N", 1, kMaxThreads);
-  cgfs::AddTextOption(app, "model", given->model,
-                      "a Wavefront OBJ model to draw instead of the chapter's figures (the "
-                      "figures 'model' and its cost view, in front of the camera)",
-                      "FILE.obj");
+  cgfs::AddThreadsOption(app, given->threads);
+  cgfs::AddModelOption(app, given->model, "the figures 'model' and its cost view");
   cgfs::AfterParsing(app, [given, &settings] {
-    Optimizations chosen = OptimizationsNamed(given->names);
-    if (given->threads > 1 && chosen.threads == 1) {
-      throw cgfs::UsageError("--threads " + std::to_string(given->threads) +
-                             " needs 'threads' in --optimizations");
-    }
-    if (given->threads > 0 && chosen.threads > 1) {
-      chosen.threads = given->threads;
-    }
-    settings.optimizations = chosen;
+    settings.optimizations = OptimizationsNamed(given->names);
+    settings.optimizations.threads =
+        cgfs::WorkersChosen(settings.optimizations.threads, given->threads);
     if (!given->model.empty()) {
       settings.model = std::make_shared<const std::vector<Triangle>>(
           TrianglesFromFile(cgfs::ReadBookModel(given->model)));
@@ -53,11 +32,9 @@ void AddChapterOptions(CLI::App& app, ChapterSettings& settings) {
 
 std::vector<Triangle> TrianglesFromFile(const cgfs::BookModel& file) {
   std::vector<Triangle> triangles;
+  const std::vector<Vec3>& V = file.vertices;
   for (const cgfs::BookModel::Triangle& T : file.triangles) {
-    const auto corner = [&](std::size_t k) {
-      return file.vertices[static_cast<std::size_t>(T.v[k])];
-    };
-    triangles.push_back(Triangle{corner(0), corner(1), corner(2), T.color, 100});
+    triangles.push_back(Triangle{V[T.v[0]], V[T.v[1]], V[T.v[2]], T.color, 100});
   }
   return triangles;
 }

@@ -65,6 +65,32 @@ void AddIntOption(CLI::App& app, const std::string& name, int& value, const std:
       });
 }
 
+void AddModelOption(CLI::App& app, std::string& file, const std::string& figures) {
+  AddTextOption(app, "model", file,
+                "a Wavefront OBJ model to draw instead of the chapter's figures (" + figures +
+                    ", in front of the camera)",
+                "FILE.obj");
+}
+
+namespace {
+
+constexpr int kMaxThreads = 256;
+
+}  // namespace
+
+void AddThreadsOption(CLI::App& app, int& threads) {
+  AddIntOption(app, "threads", threads, "workers when 'threads' is on (default: one per core)", "N",
+               1, kMaxThreads);
+}
+
+int WorkersChosen(int chosen, int threads) {
+  if (threads > 1 && chosen == 1) {
+    throw UsageError("--threads " + std::to_string(threads) +
+                     " needs 'threads' in --optimizations");
+  }
+  return threads > 0 && chosen > 1 ? threads : chosen;
+}
+
 void SetDefaultSize(CLI::App& app, const std::string& size) {
   CLI::Option* option = app.get_option("--size");
   const std::string help = option->get_description();

@@ -33,12 +33,24 @@ void AddListOption(CLI::App& app, const std::string& name, std::vector<std::stri
                    const std::string& help, const std::string& type_name,
                    const std::vector<std::string>& allowed);
 
+// --model FILE.obj: a Wavefront OBJ model of the reader's own (read with
+// ReadBookModel, program/book_model.h), drawn as `figures` instead of the chapter's own.
+void AddModelOption(CLI::App& app, std::string& file, const std::string& figures);
+
+// --threads N, the workers when 'threads' is among the chosen optimisations (0: not
+// given); and the workers a chapter uses: `chosen` as its optimisations give it (1
+// without 'threads', one per core with it), or N where given. A UsageError for N > 1
+// without 'threads'.
+void AddThreadsOption(CLI::App& app, int& threads);
+int WorkersChosen(int chosen, int threads);
+
 // For a chapter whose figures have a size of their own (the business card is
 // 512x512): the --size the chapter program uses when none is given.
 void SetDefaultSize(CLI::App& app, const std::string& size);
 
 // Runs `callback` once the whole command line has been read, before anything is
-// drawn; what it throws is reported like any other error (RunReportingErrors).
+// drawn; what it throws is reported like any other error (RunReportingErrors). One per
+// program (CLI11 keeps one: a second replaces the first).
 void AfterParsing(CLI::App& app, std::function<void()> callback);
 
 }  // namespace cgfs
