@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "scene_rendering.h"
-
 // Chapter 4, "Reflections".
 Vec3 ReflectRay(const Vec3& R, const Vec3& N) {
   return 2.0 * N * glm::dot(N, R) - R;
@@ -30,8 +28,6 @@ Color SampleCubeMap(const CubeMap& cube_map, const Vec3& R) {
 
 CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
   Scene surroundings = scene;
-  const double d = NearPlaneOfMaps(scene);
-  surroundings.viewport = {2 * d, 2 * d, d};
   surroundings.instances.clear();
   for (const Instance& instance : scene.instances) {
     if (instance.model->reflective == 0) {
@@ -40,14 +36,10 @@ CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
   }
   CubeMap cube_map;
   for (int f = 0; f < 6; ++f) {
-    const auto face = static_cast<CubeFace>(f);
-    surroundings.camera = {centre, CubeFaceOrientation(face)};
     Canvas canvas(size, size);
     DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-    Frame frame(canvas, depth_buffer, surroundings.viewport);
-    PhongSteps none;
-    RenderView(surroundings, CubeFaceClippingPlanes(d, size), {}, AllLights(surroundings), frame,
-               none);
+    Frame frame(canvas, depth_buffer, CubeFaceViewport(scene));
+    RenderCubeFace(surroundings, centre, static_cast<CubeFace>(f), {}, BackFaces::kCulled, frame);
     cube_map.faces[static_cast<std::size_t>(f)] = TextureFromImage(canvas.GetImage());
   }
   return cube_map;

@@ -67,3 +67,18 @@ std::vector<Plane> CubeFaceClippingPlanes(double d, int size) {
       {{0, -n, spread * n}, 0},  // top
   };
 }
+
+Viewport CubeFaceViewport(const Scene& scene) {
+  const double d = NearPlaneOfMaps(scene);
+  return {2 * d, 2 * d, d};
+}
+
+void RenderCubeFace(const Scene& scene, const Vec3& centre, CubeFace face, const Shading& shading,
+                    BackFaces back_faces, Frame& frame) {
+  Scene seen = scene;
+  seen.camera = {centre, CubeFaceOrientation(face)};
+  seen.viewport = frame.viewport;
+  PhongSteps none;
+  RenderView(seen, CubeFaceClippingPlanes(frame.viewport.distance, frame.canvas.Width()), shading,
+             AllLights(seen), frame, none, back_faces);
+}

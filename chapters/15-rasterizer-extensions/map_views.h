@@ -11,6 +11,7 @@
 #include "cgfs/math.h"
 #include "clipping.h"
 #include "scene.h"
+#include "scene_rendering.h"
 
 using cgfs::Vec3;
 
@@ -48,3 +49,15 @@ double NearPlaneOfMaps(const Scene& scene);
 // points where |x| / z or |y| / z = 1 + 4 / size, so that the rasteriser, which
 // truncates toward zero, does not leave the edge columns and rows of the face empty.
 std::vector<Plane> CubeFaceClippingPlanes(double d, int size);
+
+// The viewport of a cube map's face, or of a view of a point light's shadow map: 2d x 2d
+// at d = NearPlaneOfMaps, a 90-degree view.
+Viewport CubeFaceViewport(const Scene& scene);
+
+// A cube map's face, or a view of a point light's shadow map: the scene seen from
+// `centre` along `face`, drawn by RenderView into `frame` (a square canvas behind a 1/z
+// depth buffer, its viewport CubeFaceViewport) through CubeFaceClippingPlanes, shaded
+// as `shading` says with nothing added, lit by all the scene's lights, back faces as
+// `back_faces` says.
+void RenderCubeFace(const Scene& scene, const Vec3& centre, CubeFace face, const Shading& shading,
+                    BackFaces back_faces, Frame& frame);

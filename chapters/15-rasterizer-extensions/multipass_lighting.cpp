@@ -38,21 +38,18 @@ void AccumulationBuffer::WriteTo(Canvas& canvas) const {
   }
 }
 
-bool PassDepthTest(const Pass& pass, DepthBuffer& depth_buffer, int x, int y, double depth) {
-  if (!pass.sum || pass.first) {
-    return depth_buffer.TestAndSet(x, y, depth);
+bool PassFrame::TestAndSet(int x, int y, double inv_z) {
+  if (first) {
+    return depth_buffer.TestAndSet(x, y, inv_z);
   }
-  return depth_buffer.Holds(x, y, depth) && (!pass.stencil || pass.stencil->At(x, y) == 0) &&
-         pass.sum->CanAdd(x, y);
+  return depth_buffer.Holds(x, y, inv_z) && stencil.At(x, y) == 0 && sum.CanAdd(x, y);
 }
 
-void PassWrite(const Pass& pass, Canvas& canvas, int x, int y, const Color& color) {
-  if (!pass.sum) {
-    canvas.PutPixel(x, y, color);
-  } else if (pass.first) {
-    pass.sum->Set(x, y, color);
+void PassFrame::Write(int x, int y, const Color& color) {
+  if (first) {
+    sum.Set(x, y, color);
   } else {
-    pass.sum->Add(x, y, color);
+    sum.Add(x, y, color);
   }
 }
 
@@ -88,7 +85,7 @@ void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const 
       ambient.lights.push_back(k);
     }
   }
-  PassFrame first(frame.canvas, frame.depth_buffer, frame.viewport, {&sum, true, nullptr});
+  PassFrame first(frame, sum, true, stencil);
   RenderView(scene, planes, shading, ambient, first, steps);
 
   for (std::size_t k = 0; k < lights.size(); ++k) {
@@ -99,8 +96,7 @@ void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const 
       MarkShadowVolumes(unclipped, lights[k], planes, *counting, frame, stencil);
     }
     sum.BeginPass();
-    PassFrame pass(frame.canvas, frame.depth_buffer, frame.viewport,
-                   {&sum, false, counting ? &stencil : nullptr});
+    PassFrame pass(frame, sum, false, stencil);
     RenderView(scene, planes, shading, {{k}, false}, pass, steps);
   }
   sum.WriteTo(frame.canvas);

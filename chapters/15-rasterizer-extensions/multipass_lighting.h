@@ -47,36 +47,25 @@ class AccumulationBuffer {
   int pass_ = 0;
 };
 
-// How a pass treats the pixels of a triangle it draws.
-struct Pass {
-  // Where the colours go: nullptr draws straight onto the canvas, in one pass.
-  AccumulationBuffer* sum = nullptr;
-  // The first pass: depth test and set, as "Depth Buffering" does, the colour Set. A later
-  // pass leaves the depth buffer as it is: it draws only where a triangle's depth is
-  // exactly what the first pass stored (the same triangle, rasterised again the
-  // same way, gives the same 1/z), and only where `stencil` (if any) holds 0.
-  bool first = true;
-  const StencilBuffer* stencil = nullptr;
-};
-
-// Whether the pass draws pixel (x, y) of a triangle whose 1/z there is `depth`.
-bool PassDepthTest(const Pass& pass, DepthBuffer& depth_buffer, int x, int y, double depth);
-
-// The pixel's colour, where the pass sends it.
-void PassWrite(const Pass& pass, Canvas& canvas, int x, int y, const Color& color);
-
-// A frame drawn in a pass: the pass decides which pixels it draws and where their
-// colours go.
+// A frame drawn in a pass: its colours go to the sum. The first pass depth tests and
+// sets, as "Depth Buffering" does, and sets the sum. A later pass leaves the depth buffer
+// as it is: it draws only where a triangle's depth is exactly what the first pass stored
+// (the same triangle, rasterised again the same way, gives the same 1/z) and the stencil
+// holds 0, and adds to the sum.
 struct PassFrame : Frame {
-  PassFrame(Canvas& target, DepthBuffer& depths, const Viewport& shown, const Pass& drawn)
-      : Frame(target, depths, shown), pass(drawn) {}
+  PassFrame(const Frame& frame, AccumulationBuffer& into, bool first_pass,
+            const StencilBuffer& where)
+      : Frame(frame.canvas, frame.depth_buffer, frame.viewport),
+        sum(into),
+        first(first_pass),
+        stencil(where) {}
 
-  Pass pass;
+  AccumulationBuffer& sum;
+  bool first;
+  const StencilBuffer& stencil;
 
-  bool TestAndSet(int x, int y, double inv_z) override {
-    return PassDepthTest(pass, depth_buffer, x, y, inv_z);
-  }
-  void Write(int x, int y, const Color& color) override { PassWrite(pass, canvas, x, y, color); }
+  bool TestAndSet(int x, int y, double inv_z) override;
+  void Write(int x, int y, const Color& color) override;
 };
 
 // "Stencil Shadows": the view drawn in passes (RenderView, each pass with its lights)

@@ -38,12 +38,3 @@ Vec3 ApplyNormalMap(const Vec3& n, const TangentBasis& basis, const Vec3& N);
 // (i, j).
 Vec3 BendNormal(const Vec3& N, const Texture* normal_map, const glm::dvec2& uv,
                 const TangentBasis& tangents);
-
-// The project's normal map: size x size texels of bumps x bumps diamond-shaped
-// pyramids on a flat ground, in the encoding above.
-Texture MakeDiamondNormalMap(int size, int bumps);
-
-// Its colour texture: the diamonds as stone tiles, a little lighter and darker in turn,
-// and the ground between them as darker grout, texel for texel where the normal map
-// has its bumps and its ground.
-Texture MakeDiamondTiles(int size, int bumps);

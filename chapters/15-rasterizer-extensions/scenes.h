@@ -41,6 +41,15 @@ Scene SceneCrates(const Model& crate);
 // light 0.8 at (-3, 0, 4) (from the left) or at (3, 0, 4) (from the right).
 Scene SceneNormalMappedSquare(bool light_from_left);
 
+// The project's normal map: size x size texels of bumps x bumps diamond-shaped
+// pyramids on a flat ground, encoded as normal_mapping.h's DecodeNormal reads it.
+Texture MakeDiamondNormalMap(int size, int bumps);
+
+// Its colour texture: the diamonds as stone tiles, a little lighter and darker in turn,
+// and the ground between them as darker grout, texel for texel where the normal map
+// has its bumps and its ground.
+Texture MakeDiamondTiles(int size, int bumps);
+
 // The normal map of Figure 15-1, and its colour texture.
 const Texture& DiamondNormalMap();
 const MipmappedTexture& DiamondTiles();

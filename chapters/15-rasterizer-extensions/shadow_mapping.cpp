@@ -183,24 +183,17 @@ struct DepthOnlyFrame final : Frame {
   void Write(int /*x*/, int /*y*/, const Color& /*color*/) override {}
 };
 
-// A point light's view: the scene drawn from the light like a cube map's face
-// (RenderView, flat and unlit, no step added, back faces drawn), into a frame that
-// keeps only the depths.
-DepthMap PerspectiveView(const Scene& scene, const glm::dmat4& orientation, const Vec3& position,
-                         int size) {
-  Scene from_light = scene;
-  const double d = NearPlaneOfMaps(scene);
-  from_light.viewport = {2 * d, 2 * d, d};
-  from_light.camera = {position, orientation};
+// A point light's view: a cube map's face seen from the light (RenderCubeFace, flat, its
+// back faces drawn), into a frame that keeps only the depths.
+DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face, int size) {
   Canvas canvas(size, size);
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  DepthOnlyFrame frame(canvas, depth_buffer, from_light.viewport);
-  Shading unlit;
-  unlit.model = ShadingModel::kFlat;
-  PhongSteps none;
-  RenderView(from_light, CubeFaceClippingPlanes(d, size), unlit, {}, frame, none,
-             BackFaces::kDrawn);
-  return {size, DepthsOf(depth_buffer, size), MakeCameraMatrix(position, orientation), false, 1};
+  DepthOnlyFrame frame(canvas, depth_buffer, CubeFaceViewport(scene));
+  Shading flat;
+  flat.model = ShadingModel::kFlat;
+  RenderCubeFace(scene, position, face, flat, BackFaces::kDrawn, frame);
+  const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
+  return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
 }
 
 // A directional light's view: orthographic, so a point (x, y, z) of the view's
@@ -238,9 +231,8 @@ ShadowMap RenderShadowMap(const Scene& scene, const Light& light, const ShadowMa
   shadow_map.settings = settings;
   if (light.type == LightType::kPoint) {
     for (int f = 0; f < 6; ++f) {
-      const glm::dmat4 orientation = CubeFaceOrientation(static_cast<CubeFace>(f));
       shadow_map.views.push_back(
-          PerspectiveView(scene, orientation, light.position, settings.size));
+          PerspectiveView(scene, light.position, static_cast<CubeFace>(f), settings.size));
     }
   } else if (light.type == LightType::kDirectional) {
     shadow_map.views.push_back(OrthographicView(scene, light.direction, settings.size));

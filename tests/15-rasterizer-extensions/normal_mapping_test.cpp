@@ -4,6 +4,7 @@
 #include "cases.h"
 #include "checks.h"
 #include "normal_mapping.h"
+#include "scenes.h"
 
 using cgfs::test::CheckNear;
 
