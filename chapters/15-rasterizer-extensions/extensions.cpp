@@ -45,10 +45,10 @@ class Stages final : public PhongSteps {
     const std::optional<CubeMap>& environment = maps_.environments[instance];
     environment_ = environment ? &*environment : nullptr;
     reflective_ = model.reflective;
-    first_pass_ = pass.first;
+    first_pass_ = pass.First();
     shadow_maps_.clear();
-    for (const std::size_t k : pass.lights) {
-      if (!maps_.shadow_maps.empty()) {
+    for (std::size_t k = 0; k < maps_.shadow_maps.size(); ++k) {
+      if (pass.Includes(k, scene_.lights[k])) {
         shadow_maps_.push_back(&maps_.shadow_maps[k]);
       }
     }
@@ -106,6 +106,6 @@ void RenderScene(const Scene& scene, Canvas& canvas, const Shading& shading,
     }
     RenderInPasses(scene, planes, shading, counting, frame, stages);
   } else {
-    RenderView(scene, planes, shading, AllLights(scene), frame, stages);
+    RenderView(scene, planes, shading, {}, frame, stages);
   }
 }

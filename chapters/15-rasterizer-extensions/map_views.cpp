@@ -80,5 +80,5 @@ void RenderCubeFace(const Scene& scene, const Vec3& centre, CubeFace face, const
   seen.viewport = frame.viewport;
   PhongSteps none;
   RenderView(seen, CubeFaceClippingPlanes(frame.viewport.distance, frame.canvas.Width()), shading,
-             AllLights(seen), frame, none, back_faces);
+             {}, frame, none, back_faces);
 }

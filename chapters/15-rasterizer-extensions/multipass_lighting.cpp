@@ -79,14 +79,8 @@ void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const 
   const std::vector<Light> lights = TransformLights(scene.lights, M_camera);
   AccumulationBuffer sum(frame.canvas);
   StencilBuffer stencil(frame.canvas);
-  LightsOfPass ambient;
-  for (std::size_t k = 0; k < lights.size(); ++k) {
-    if (lights[k].type == LightType::kAmbient) {
-      ambient.lights.push_back(k);
-    }
-  }
   PassFrame first(frame, sum, true, stencil);
-  RenderView(scene, planes, shading, ambient, first, steps);
+  RenderView(scene, planes, shading, {LightsOfPass::Which::kAmbient}, first, steps);
 
   for (std::size_t k = 0; k < lights.size(); ++k) {
     if (lights[k].type == LightType::kAmbient) {
@@ -97,7 +91,7 @@ void RenderInPasses(const Scene& scene, const std::vector<Plane>& planes, const 
     }
     sum.BeginPass();
     PassFrame pass(frame, sum, false, stencil);
-    RenderView(scene, planes, shading, {{k}, false}, pass, steps);
+    RenderView(scene, planes, shading, {LightsOfPass::Which::kOne, k}, pass, steps);
   }
   sum.WriteTo(frame.canvas);
 }

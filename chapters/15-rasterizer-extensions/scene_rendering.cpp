@@ -1,7 +1,5 @@
 #include "scene_rendering.h"
 
-#include <numeric>
-
 #include "back_face_culling.h"
 
 namespace {
@@ -60,13 +58,6 @@ CameraSpaceScene SceneInView(const Scene& scene, const glm::dmat4& M_camera) {
   return camera_space_scene;
 }
 
-LightsOfPass AllLights(const Scene& scene) {
-  LightsOfPass pass;
-  pass.lights.resize(scene.lights.size());
-  std::iota(pass.lights.begin(), pass.lights.end(), std::size_t{0});
-  return pass;
-}
-
 // "The Clipping Pipeline": model space to camera space with one matrix per
 // instance, then clipping, then projection. Clipping happens in camera space, where
 // the clipping volume does not depend on the camera. What survives lies beyond the
@@ -79,8 +70,10 @@ void RenderView(const Scene& scene, const std::vector<Plane>& planes, const Shad
   const CameraSpaceScene camera_space_scene = SceneInView(scene, M_camera);
   const std::vector<Light> lights = TransformLights(scene.lights, M_camera);
   Lighting lighting{{}, shading};
-  for (const std::size_t k : pass.lights) {
-    lighting.lights.push_back(lights[k]);
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    if (pass.Includes(k, lights[k])) {
+      lighting.lights.push_back(lights[k]);
+    }
   }
 
   const Vec3 camera(0, 0, 0);  // where the camera is, in camera space

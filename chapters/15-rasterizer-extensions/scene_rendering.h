@@ -31,9 +31,6 @@ void RenderObject(const Model& object, const Lighting& lighting, Frame& frame, P
 // view whose camera matrix is M_camera, one matrix per instance.
 CameraSpaceScene SceneInView(const Scene& scene, const glm::dmat4& M_camera);
 
-// Every light of the scene, in one pass.
-LightsOfPass AllLights(const Scene& scene);
-
 // Whether a view culls the back faces of closed models ("Back Face Culling"). A shadow
 // map's view draws them: where the rasteriser leaves a gap along the outline of an
 // occluder's front faces, its back faces still cast the shadow.

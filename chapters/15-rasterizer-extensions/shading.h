@@ -158,12 +158,21 @@ struct PhongPixel {
   std::vector<double> visibility;
 };
 
-// The lights a view is drawn with, as indices among the scene's lights, and whether
-// this is the frame's first pass (or its only one): multi-pass lighting draws a view
-// once per light.
+// The lights a view is drawn with: all the scene's (in one pass), or, in multi-pass
+// lighting, its ambient lights (the frame's first pass) or light number k alone (each
+// later pass).
 struct LightsOfPass {
-  std::vector<std::size_t> lights;
-  bool first = true;
+  enum class Which { kAll, kAmbient, kOne };
+  Which which = Which::kAll;
+  std::size_t k = 0;  // with kOne
+
+  // Whether the pass is lit by the scene's light number `index`, `light`.
+  bool Includes(std::size_t index, const Light& light) const {
+    return which == Which::kAll ||
+           (which == Which::kAmbient && light.type == LightType::kAmbient) ||
+           (which == Which::kOne && index == k);
+  }
+  bool First() const { return which != Which::kOne; }  // the frame's first pass, or only one
 };
 
 // What a renderer adds to Phong shading, as one object for a whole render (the
