@@ -168,6 +168,17 @@ void Bvh::Walk(const Ray& ray, double t_min, double t_max, const double& best, V
   }
 }
 
+template <typename Test>
+bool Bvh::InSceneOrder(Test test) const {
+  for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
+    cgfs::Tally(kObjectTests);
+    if (test(candidate)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const {
   Hit best;
   object = -1;
@@ -185,15 +196,15 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
       object = candidate;
     }
   };
-  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order, without a box test
-    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      cgfs::Tally(kObjectTests);
+  if (root_ < 0) {  // all in one leaf: without a box test
+    InSceneOrder([&](int candidate) {
       const Hit hit = objects_[candidate]->Intersect(ray, t_min, t_max);
       if (hit.t < best.t) {
         best = hit;
         object = candidate;
       }
-    }
+      return false;
+    });
     return best;
   }
   Walk(ray, t_min, t_max, best.t, [&](const Leaf& leaf) {
@@ -207,14 +218,12 @@ Hit Bvh::Closest(const Ray& ray, double t_min, double t_max, int& object) const 
 
 bool Bvh::Any(const Ray& ray, double t_min, double t_max, int& object) const {
   object = -1;
-  if (root_ < 0) {  // all in one leaf: the plain loop, in scene order
-    for (int candidate = 0; candidate < static_cast<int>(objects_.size()); ++candidate) {
-      if (objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf) {
-        object = candidate;
-        return true;
-      }
-    }
-    return false;
+  if (root_ < 0) {  // all in one leaf: without a box test
+    return InSceneOrder([&](int candidate) {
+      const bool hit = objects_[candidate]->Intersect(ray, t_min, t_max).t < cgfs::kInf;
+      object = hit ? candidate : object;
+      return hit;
+    });
   }
   if (order_.empty()) {
     return false;

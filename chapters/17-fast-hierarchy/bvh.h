@@ -130,6 +130,11 @@ class Bvh {
   int Pack(int node);
   template <typename Visit>
   void Walk(const Ray& ray, double t_min, double t_max, const double& t_best, Visit visit) const;
+  // All in one leaf (no root): test(object) for every object in scene order, as the
+  // plain loop tests them, each test counted (kObjectTests); stops when test returns
+  // true, and says whether it did.
+  template <typename Test>
+  bool InSceneOrder(Test test) const;
 
   // The hit of the object in leaf slot `slot`, order_[slot]. Prepared spheres and
   // triangles, the usual leaves, are tested inline, from the hierarchy's copy of what

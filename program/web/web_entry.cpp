@@ -6,6 +6,9 @@
 // line in LastError() for the page to show. A chapter with options of its own
 // (options.h) reads them from the page as its program reads them from a command line
 // (UseOptions): a model the reader chose is drawn by the chapter's own code.
+// This file alone of program/ stands above the chapters: it is the web programs'
+// main.cpp, compiled into each chapter's web program with that chapter's files (which is
+// why it can include scenes.h), never into the web shell library the chapters stand on.
 #include <emscripten.h>
 
 #include <algorithm>
