@@ -1,43 +1,23 @@
 #include "program/camera_controls.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace cgfs {
 
+// What one press of each key adds to the view, in CameraKey's order: a step along the
+// camera's axes, or a turn about them.
+constexpr View kPresses[] = {
+    {{0, 0, kCameraStep}, 0, 0}, {{0, 0, -kCameraStep}, 0, 0},  // forward, back
+    {{kCameraStep, 0, 0}, 0, 0}, {{-kCameraStep, 0, 0}, 0, 0},  // right, left
+    {{0, kCameraStep, 0}, 0, 0}, {{0, -kCameraStep, 0}, 0, 0},  // up, down
+    {{0, 0, 0}, kCameraTurn, 0}, {{0, 0, 0}, -kCameraTurn, 0},  // turn left, right
+    {{0, 0, 0}, 0, kCameraTurn}, {{0, 0, 0}, 0, -kCameraTurn},  // look up, down
+};
+
 View Moved(View view, CameraKey key) {
-  switch (key) {
-    case CameraKey::kForward:
-      view.move.z += kCameraStep;
-      break;
-    case CameraKey::kBack:
-      view.move.z -= kCameraStep;
-      break;
-    case CameraKey::kRight:
-      view.move.x += kCameraStep;
-      break;
-    case CameraKey::kLeft:
-      view.move.x -= kCameraStep;
-      break;
-    case CameraKey::kUp:
-      view.move.y += kCameraStep;
-      break;
-    case CameraKey::kDown:
-      view.move.y -= kCameraStep;
-      break;
-    case CameraKey::kTurnLeft:
-      view.yaw += kCameraTurn;
-      break;
-    case CameraKey::kTurnRight:
-      view.yaw -= kCameraTurn;
-      break;
-    case CameraKey::kLookUp:
-      view.pitch += kCameraTurn;
-      break;
-    case CameraKey::kLookDown:
-      view.pitch -= kCameraTurn;
-      break;
-  }
-  return view;
+  const View& press = kPresses[static_cast<std::size_t>(key)];
+  return {view.move + press.move, view.yaw + press.yaw, view.pitch + press.pitch};
 }
 
 View Dragged(View view, int right, int down) {

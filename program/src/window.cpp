@@ -95,30 +95,19 @@ Shown Draw(const Figure& figure, int width, int height, const View& view) {
 
 // What a key does to the camera; nothing for keys that do not move it.
 std::optional<CameraKey> CameraKeyOf(SDL_Keycode key) {
-  switch (key) {
-    case SDLK_UP:
-      return CameraKey::kForward;
-    case SDLK_DOWN:
-      return CameraKey::kBack;
-    case SDLK_d:
-      return CameraKey::kRight;
-    case SDLK_a:
-      return CameraKey::kLeft;
-    case SDLK_PAGEUP:
-      return CameraKey::kUp;
-    case SDLK_PAGEDOWN:
-      return CameraKey::kDown;
-    case SDLK_q:
-      return CameraKey::kTurnLeft;
-    case SDLK_e:
-      return CameraKey::kTurnRight;
-    case SDLK_HOME:
-      return CameraKey::kLookUp;
-    case SDLK_END:
-      return CameraKey::kLookDown;
-    default:
-      return std::nullopt;
+  static constexpr std::pair<SDL_Keycode, CameraKey> kKeys[] = {
+      {SDLK_UP, CameraKey::kForward},  {SDLK_DOWN, CameraKey::kBack},
+      {SDLK_d, CameraKey::kRight},     {SDLK_a, CameraKey::kLeft},
+      {SDLK_PAGEUP, CameraKey::kUp},   {SDLK_PAGEDOWN, CameraKey::kDown},
+      {SDLK_q, CameraKey::kTurnLeft},  {SDLK_e, CameraKey::kTurnRight},
+      {SDLK_HOME, CameraKey::kLookUp}, {SDLK_END, CameraKey::kLookDown},
+  };
+  for (const auto& [code, camera_key] : kKeys) {
+    if (code == key) {
+      return camera_key;
+    }
   }
+  return std::nullopt;
 }
 
 void Present(Sdl& sdl, const std::string& chapter, const Figure& figure, const Shown& shown,
