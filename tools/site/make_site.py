@@ -436,9 +436,10 @@ byte for byte, as the native program's golden image.</p>
 </div>"""
 
     def takes_models(self, chapter):
-        """Whether the chapter's program takes --model (its options.cpp declares it)."""
+        """Whether the chapter's program takes --model (its options.cpp declares it, with
+        program/arguments.h's AddModelOption)."""
         options = self.repo / "chapters" / chapter / "options.cpp"
-        return options.is_file() and '"model"' in options.read_text()
+        return options.is_file() and "cgfs::AddModelOption(" in options.read_text()
 
     def model_picker(self, chapter):
         """The picker of models.js, on the page of a chapter that takes --model."""
