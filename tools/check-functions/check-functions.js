@@ -361,19 +361,13 @@ class ProcessRunner {
     if (typeof message.load_error === "string")
       fail(message.load_error.split("\n")[0].slice(0, 500));
     const facts = message.loaded;
-    if (
-      !facts ||
-      typeof facts !== "object" ||
-      !facts.functions ||
-      typeof facts.functions !== "object" ||
-      !Array.isArray(facts.defined)
-    ) {
+    const { heldAgainstFile, isAccount } = await import("./core/account.mjs");
+    if (!isAccount(facts)) {
       fail(
         `your module ${this.options.shownModule} does not load: it said something else while loading`,
       );
     }
     // The process's account of the file, held against what the file says of itself.
-    const { heldAgainstFile } = await import("./core/account.mjs");
     const defined = await definedFunctions(this.options.module, this.language, {
       python: sandbox.pythonInterpreter()?.executable,
       nodePath: this.language === "python" ? "" : nodePath(),

@@ -2,7 +2,7 @@
 // vendor/check.js as the global CGFS_CHECK: the same judgement, messages and plan as the
 // command line's (tools/check-functions/core), the account a runner gives held against
 // its code's syntax, and the editor's starters.
-import { heldAgainstFile } from "../check-functions/core/account.mjs";
+import { heldAgainstFile, isAccount } from "../check-functions/core/account.mjs";
 import { NAMES } from "../check-functions/core/names.mjs";
 import { CASE_LIMIT, LOAD_LIMIT, functionsOf, sections } from "../check-functions/core/plan.mjs";
 import { CheckError, check, stoppedLine } from "../check-functions/core/report.mjs";
@@ -26,6 +26,7 @@ globalThis.CGFS_CHECK = {
   freshStarter,
   functionsOf,
   heldAgainstFile,
+  isAccount,
   previousChapter,
   sections,
   stoppedLine,

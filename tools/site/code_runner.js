@@ -179,7 +179,7 @@ const RefillWorkers = () => Object.values(supplies).forEach((supply) => supply.F
 // against its syntax (read first, before any of it ran). Throws CheckError with the
 // command line's words when it does not load.
 async function LoadInWorker(worker, { code, file, functions, names }) {
-  const { CheckError, LOAD_LIMIT, heldAgainstFile } = CGFS_CHECK;
+  const { CheckError, LOAD_LIMIT, heldAgainstFile, isAccount } = CGFS_CHECK;
   const declared = await worker.Request({ op: "declare", code }, LOAD_LIMIT);
   const message = await worker.Request({ op: "load", code, file, functions, names }, LOAD_LIMIT);
   if (message.timeout)
@@ -187,13 +187,7 @@ async function LoadInWorker(worker, { code, file, functions, names }) {
   if (typeof message.load_error === "string")
     throw new CheckError(message.load_error.split("\n")[0].slice(0, 500));
   const facts = message.loaded;
-  if (
-    !facts ||
-    typeof facts !== "object" ||
-    !facts.functions ||
-    typeof facts.functions !== "object" ||
-    !Array.isArray(facts.defined)
-  ) {
+  if (!isAccount(facts)) {
     throw new CheckError("your code does not load: it said something else while loading");
   }
   return heldAgainstFile(

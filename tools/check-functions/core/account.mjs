@@ -5,6 +5,18 @@
 // runs in it. A runner whose account differs cannot leave cases unrun: a function it
 // hides or describes otherwise fails, and an empty body is the file's to tell.
 
+// Whether a runner's answer to loading the file is an account of it: which functions it
+// defines (`functions`, by name) and the names defined (`defined`). Anything else is not.
+export function isAccount(facts) {
+  return (
+    !!facts &&
+    typeof facts === "object" &&
+    !!facts.functions &&
+    typeof facts.functions === "object" &&
+    Array.isArray(facts.defined)
+  );
+}
+
 // The runner's account of the wanted functions, each held against the file's: `defined`
 // maps a name to { count, required, more, empty }; null when the file could not be read
 // (the runner says why it does not load).
