@@ -35,6 +35,8 @@ const assimp = "/usr/share/assimp/models/OBJ";
 const work = mkdtempSync(join(tmpdir(), "cgfs-site-models-"));
 
 const kDrawn = "document.getElementById('canvas').dataset.drawn === 'full'";
+// The chapter's parameters as controls (chapter.js's Controls), where it has them, shown.
+const kControlsShown = "document.getElementById('controls')?.hidden === false";
 const kSaid =
   "document.getElementById('model-said').hidden ? '' : document.getElementById('model-said').textContent";
 const kFigureNames =
@@ -81,6 +83,8 @@ async function CheckSiteHouse(browser, chapter) {
   await browser.WaitFor(kDrawn, `${chapter}: the house drawn`);
   const drawnNatively = Native(chapter, join(house, "house.obj"));
   const compared = await CompareFigures(browser, chapter, drawnNatively.out, "the site's house");
+  if (await browser.Evaluate(kControlsShown))
+    Fail(`${chapter}: the chapter's controls are shown beside the model's figures`);
   const address = await browser.Evaluate("location.search");
   if (!address.startsWith("?model=house&figure="))
     Fail(`${chapter}: the address is ${address}, without the model`);
@@ -159,6 +163,8 @@ async function CheckPicker(browser, chapter) {
   await browser.Evaluate(`(() => { const select = document.getElementById('model-choice'); select.value = '';
     select.dispatchEvent(new Event('change')); })()`);
   await browser.WaitFor(`${kDrawn} && ${kOwnFirst}`, `${chapter}: the chapter's figures again`);
+  if (await browser.Evaluate(`!!document.getElementById('controls') && !(${kControlsShown})`))
+    Fail(`${chapter}: back to none, the chapter's controls stay hidden`);
   await ShowFigure(browser, 0);
   if (
     !Same(

@@ -305,6 +305,14 @@ function ListFigures(described) {
     figures.push(figure);
   }
   document.getElementById("cost-views-group").hidden = !figures.some(isCostView);
+  // The chapter's controls choose among its own figures: hidden while a model's replace them.
+  const controls = document.getElementById("controls");
+  if (controls) {
+    const listed = new Set(figures.map((figure) => figure.name));
+    controls.hidden = !JSON.parse(controls.dataset.controls).some(({ values }) =>
+      values.some(([, name]) => listed.has(name)),
+    );
+  }
   // How many there are: the list shows three rows, and scrolls.
   const costViews = figures.filter(isCostView).length;
   const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
