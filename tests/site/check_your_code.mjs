@@ -109,10 +109,28 @@ async function OpenFile(path) {
   );
 }
 
-async function Check(what, seconds = 120) {
+// Our chapter 10 in the panel, typed in with a ViewportToCanvas that keeps the fractions:
+// it passes its cases (compared truncated) and draws Figure 10-2 otherwise than ours.
+async function TypeUntruncatedChapter10() {
+  const ours = readFileSync(ReferenceOf("10-scene-rendering", "javascript"), "utf8");
+  await OpenPanel("10-scene-rendering", "javascript");
+  await Type(
+    ours.replace(
+      "{ x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) }",
+      "{ x: x * Cw / Vw, y: y * Ch / Vh }",
+    ),
+  );
+}
+
+// Clicks Check, the report's last verdict forgotten first.
+async function StartCheck() {
   await browser.Evaluate(
     `(() => { delete ${$("code-report", "dataset.done")}; document.getElementById('code-check').click(); })()`,
   );
+}
+
+async function Check(what, seconds = 120) {
+  await StartCheck();
   await browser.WaitFor(
     `${$("code-report", "dataset.done")} === 'yes'`,
     `${what}: the check`,
@@ -238,14 +256,7 @@ async function CheckMistakes() {
   );
   // A ViewportToCanvas that keeps the fractions passes its cases (compared truncated)
   // and draws Figure 10-2 otherwise than ours: the page says why.
-  const ours = readFileSync(ReferenceOf("10-scene-rendering", "javascript"), "utf8");
-  await OpenPanel("10-scene-rendering", "javascript");
-  await Type(
-    ours.replace(
-      "{ x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) }",
-      "{ x: x * Cw / Vw, y: y * Ch / Vh }",
-    ),
-  );
+  await TypeUntruncatedChapter10();
   const drawn = await Draw("fig-10-2");
   if (
     drawn.verdict !== "fail" ||
@@ -399,15 +410,14 @@ async function CheckPythonStart() {
 async function CheckEndlessLoopAndSyntax() {
   const ours = readFileSync(ReferenceOf("02-basic-rays", "javascript"), "utf8");
   await OpenPanel("02-basic-rays", "javascript");
-  await Type(
+  // Our chapter 2 with `line` first in CanvasToViewport.
+  const withFirstLine = (line) =>
     ours.replace(
       "function CanvasToViewport(x, y) {",
-      "function CanvasToViewport(x, y) {\n  if (x === 0 && y === 0) for (;;) {}",
-    ),
-  );
-  await browser.Evaluate(
-    `(() => { delete ${$("code-report", "dataset.done")}; document.getElementById('code-check').click(); })()`,
-  );
+      `function CanvasToViewport(x, y) {\n  ${line}`,
+    );
+  await Type(withFirstLine("if (x === 0 && y === 0) for (;;) {}"));
+  await StartCheck();
   const start = Date.now();
   const delays = await ClickDelays(`${$("code-report", "dataset.done")} === 'yes'`);
   await browser.WaitFor(
@@ -428,15 +438,8 @@ async function CheckEndlessLoopAndSyntax() {
   );
   // Stop during a check of a function that never returns: the check ends at once, the
   // cases not run said to be stopped (each would have taken its 5 s).
-  await Type(
-    ours.replace(
-      "function CanvasToViewport(x, y) {",
-      "function CanvasToViewport(x, y) {\n  for (;;) {}",
-    ),
-  );
-  await browser.Evaluate(
-    `(() => { delete ${$("code-report", "dataset.done")}; document.getElementById('code-check').click(); })()`,
-  );
+  await Type(withFirstLine("for (;;) {}"));
+  await StartCheck();
   await sleep(1500);
   const stopped = Date.now();
   await browser.Evaluate("document.getElementById('code-stop').click()");
@@ -609,14 +612,7 @@ async function CheckComparison() {
     deviceScaleFactor: 1,
     mobile: false,
   });
-  const ours = readFileSync(ReferenceOf("10-scene-rendering", "javascript"), "utf8");
-  await OpenPanel("10-scene-rendering", "javascript");
-  await Type(
-    ours.replace(
-      "{ x: Math.trunc(x * Cw / Vw), y: Math.trunc(y * Ch / Vh) }",
-      "{ x: x * Cw / Vw, y: y * Ch / Vh }",
-    ),
-  );
+  await TypeUntruncatedChapter10();
   await Check("canvas points not truncated");
   const drawn = await Draw("fig-10-2");
   const legend =
