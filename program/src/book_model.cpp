@@ -95,26 +95,34 @@ BookModel ReadBookModel(const std::filesystem::path& path) {
 
 std::vector<BookModel> SplitModel(const BookModel& model, const std::vector<std::size_t>& part_of,
                                   std::size_t parts) {
-  std::vector<BookModel> split(parts);
-  std::vector<std::vector<int>> own(parts);  // a part's number for each of the model's vertices
+  std::vector<std::vector<std::size_t>> triangles_of(parts);  // each part's triangles
   for (std::size_t t = 0; t < model.triangles.size(); ++t) {
-    BookModel& part = split[part_of[t]];
-    std::vector<int>& numbers = own[part_of[t]];
-    numbers.resize(model.vertices.size(), -1);
-    BookModel::Triangle triangle = model.triangles[t];
-    for (int& v : triangle.v) {
-      int& number = numbers[static_cast<std::size_t>(v)];
-      if (number < 0) {
-        number = static_cast<int>(part.vertices.size());
-        part.vertices.push_back(model.vertices[static_cast<std::size_t>(v)]);
-      }
-      v = number;
-    }
-    part.triangles.push_back(triangle);
+    triangles_of[part_of[t]].push_back(t);
   }
-  for (BookModel& part : split) {
+  // The number a vertex of the model has in the part being made, -1: none yet. One list
+  // for all the parts, set back after each: memory for the vertices once, not per part.
+  std::vector<int> own(model.vertices.size(), -1);
+  std::vector<BookModel> split(parts);
+  for (std::size_t p = 0; p < parts; ++p) {
+    BookModel& part = split[p];
     part.closed = model.closed;
-    part.materials = model.materials;
+    for (const std::size_t t : triangles_of[p]) {
+      BookModel::Triangle triangle = model.triangles[t];
+      for (int& v : triangle.v) {
+        int& number = own[static_cast<std::size_t>(v)];
+        if (number < 0) {
+          number = static_cast<int>(part.vertices.size());
+          part.vertices.push_back(model.vertices[static_cast<std::size_t>(v)]);
+        }
+        v = number;
+      }
+      part.triangles.push_back(triangle);
+    }
+    for (const std::size_t t : triangles_of[p]) {
+      for (const int v : model.triangles[t].v) {
+        own[static_cast<std::size_t>(v)] = -1;
+      }
+    }
   }
   return split;
 }

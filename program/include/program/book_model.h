@@ -52,7 +52,9 @@ BookModel ReadBookModel(const std::filesystem::path& path);
 // The model split into `parts` models, triangle t into part part_of[t]; each part keeps
 // only the vertices its triangles use (numbered anew, in the order they are first
 // used) and the model's closedness (a back face of a closed surface cannot be seen,
-// whichever part it is in).
+// whichever part it is in), not its materials (each triangle keeps its index into the
+// model's). Its memory beyond the parts' own is one number per vertex of the model,
+// however many parts there are (up to kMaxMaterials, each on up to kMaxModelVertices).
 std::vector<BookModel> SplitModel(const BookModel& model, const std::vector<std::size_t>& part_of,
                                   std::size_t parts);
 
