@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene_rendering.h"
+
 // Chapter 4, "Reflections".
 Vec3 ReflectRay(const Vec3& R, const Vec3& N) {
   return 2.0 * N * glm::dot(N, R) - R;
@@ -34,12 +36,15 @@ CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
       surroundings.instances.push_back(instance);
     }
   }
+  const Viewport viewport = CubeFaceViewport(scene);
+  PhongSteps none;
   CubeMap cube_map;
   for (int f = 0; f < 6; ++f) {
     Canvas canvas(size, size);
     DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-    Frame frame(canvas, depth_buffer, CubeFaceViewport(scene));
-    RenderCubeFace(surroundings, centre, static_cast<CubeFace>(f), {}, BackFaces::kCulled, frame);
+    Frame frame(canvas, depth_buffer, viewport);
+    RenderView(CubeFaceView(surroundings, centre, static_cast<CubeFace>(f), viewport),
+               CubeFaceClippingPlanes(viewport.distance, size), {}, {}, frame, none);
     cube_map.faces[static_cast<std::size_t>(f)] = TextureFromImage(canvas.GetImage());
   }
   return cube_map;

@@ -73,12 +73,8 @@ Viewport CubeFaceViewport(const Scene& scene) {
   return {2 * d, 2 * d, d};
 }
 
-void RenderCubeFace(const Scene& scene, const Vec3& centre, CubeFace face, const Shading& shading,
-                    BackFaces back_faces, Frame& frame) {
-  Scene seen = scene;
-  seen.camera = {centre, CubeFaceOrientation(face)};
-  seen.viewport = frame.viewport;
-  PhongSteps none;
-  RenderView(seen, CubeFaceClippingPlanes(frame.viewport.distance, frame.canvas.Width()), shading,
-             {}, frame, none, back_faces);
+Scene CubeFaceView(Scene scene, const Vec3& centre, CubeFace face, const Viewport& viewport) {
+  scene.camera = {centre, CubeFaceOrientation(face)};
+  scene.viewport = viewport;
+  return scene;
 }

@@ -11,7 +11,6 @@
 #include "cgfs/math.h"
 #include "clipping.h"
 #include "scene.h"
-#include "scene_rendering.h"
 
 using cgfs::Vec3;
 
@@ -54,10 +53,8 @@ std::vector<Plane> CubeFaceClippingPlanes(double d, int size);
 // at d = NearPlaneOfMaps, a 90-degree view.
 Viewport CubeFaceViewport(const Scene& scene);
 
-// A cube map's face, or a view of a point light's shadow map: the scene seen from
-// `centre` along `face`, drawn by RenderView into `frame` (a square canvas behind a 1/z
-// depth buffer, its viewport CubeFaceViewport) through CubeFaceClippingPlanes, shaded
-// as `shading` says with nothing added, lit by all the scene's lights, back faces as
-// `back_faces` says.
-void RenderCubeFace(const Scene& scene, const Vec3& centre, CubeFace face, const Shading& shading,
-                    BackFaces back_faces, Frame& frame);
+// A cube map's face, or a view of a point light's shadow map: `scene` with its camera at
+// `centre`, looking along `face`, and `viewport` (CubeFaceViewport). RenderView
+// (scene_rendering.h) draws it through CubeFaceClippingPlanes into a square canvas
+// behind a 1/z depth buffer.
+Scene CubeFaceView(Scene scene, const Vec3& centre, CubeFace face, const Viewport& viewport);

@@ -183,15 +183,19 @@ struct DepthOnlyFrame final : Frame {
   void Write(int /*x*/, int /*y*/, const Color& /*color*/) override {}
 };
 
-// A point light's view: a cube map's face seen from the light (RenderCubeFace, flat, its
-// back faces drawn), into a frame that keeps only the depths.
+// A point light's view: a cube map's face seen from the light, flat, its back faces
+// drawn, into a frame that keeps only the depths.
 DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face, int size) {
   Canvas canvas(size, size);
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  DepthOnlyFrame frame(canvas, depth_buffer, CubeFaceViewport(scene));
+  const Viewport viewport = CubeFaceViewport(scene);
+  DepthOnlyFrame frame(canvas, depth_buffer, viewport);
   Shading flat;
   flat.model = ShadingModel::kFlat;
-  RenderCubeFace(scene, position, face, flat, BackFaces::kDrawn, frame);
+  PhongSteps none;
+  RenderView(CubeFaceView(scene, position, face, viewport),
+             CubeFaceClippingPlanes(viewport.distance, size), flat, {}, frame, none,
+             BackFaces::kDrawn);
   const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
   return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
 }
