@@ -37,14 +37,15 @@ CubeMap RenderCubeMap(const Scene& scene, const Vec3& centre, int size) {
     }
   }
   const Viewport viewport = CubeFaceViewport(scene);
+  const std::vector<Plane> planes = CubeFaceClippingPlanes(viewport.distance, size);
   PhongSteps none;
   CubeMap cube_map;
   for (int f = 0; f < 6; ++f) {
     Canvas canvas(size, size);
     DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
     Frame frame(canvas, depth_buffer, viewport);
-    RenderView(CubeFaceView(surroundings, centre, static_cast<CubeFace>(f), viewport),
-               CubeFaceClippingPlanes(viewport.distance, size), {}, {}, frame, none);
+    const Scene seen = CubeFaceView(surroundings, centre, static_cast<CubeFace>(f), viewport);
+    RenderView(seen, planes, {}, {}, frame, none);
     cube_map.faces[static_cast<std::size_t>(f)] = TextureFromImage(canvas.GetImage());
   }
   return cube_map;

@@ -193,10 +193,10 @@ DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face
   Shading flat;
   flat.model = ShadingModel::kFlat;
   PhongSteps none;
-  RenderView(CubeFaceView(scene, position, face, viewport),
-             CubeFaceClippingPlanes(viewport.distance, size), flat, {}, frame, none,
-             BackFaces::kDrawn);
+  const Scene seen = CubeFaceView(scene, position, face, viewport);
+  const std::vector<Plane> planes = CubeFaceClippingPlanes(viewport.distance, size);
   const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
+  RenderView(seen, planes, flat, {}, frame, none, BackFaces::kDrawn);
   return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
 }
 

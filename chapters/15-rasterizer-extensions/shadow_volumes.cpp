@@ -206,8 +206,10 @@ void MarkShadowVolume(const Model& volume, const std::vector<Plane>& clipping_pl
     const Vec3& C = vertices[T.v[2]];
     const bool back = IsBackFacing(A, B, C, camera);
     const int delta = depth_fail == back ? +1 : -1;
-    DrawStencilTriangle(CanvasPosition(A, canvas, viewport), CanvasPosition(B, canvas, viewport),
-                        CanvasPosition(C, canvas, viewport), 1 / A.z, 1 / B.z, 1 / C.z, delta,
-                        depth_fail, canvas, depth_buffer, stencil);
+    const glm::dvec2 a = CanvasPosition(A, canvas, viewport);
+    const glm::dvec2 b = CanvasPosition(B, canvas, viewport);
+    const glm::dvec2 c = CanvasPosition(C, canvas, viewport);
+    DrawStencilTriangle(a, b, c, 1 / A.z, 1 / B.z, 1 / C.z, delta, depth_fail, canvas, depth_buffer,
+                        stencil);
   }
 }
