@@ -10,17 +10,17 @@ import { join } from "node:path";
 
 export const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
 let failures = 0;
-export function Fail(line) {
+export function fail(line) {
   console.log(`FAIL: ${line}`);
   ++failures;
 }
-export const Failures = () => failures;
+export const failureCount = () => failures;
 
 // Chromium, and one page of it, spoken to through --remote-debugging-pipe: the
 // browser reads commands from its file descriptor 3 and writes its answers to 4, each
 // message JSON ended by a NUL byte (no WebSocket, so any Node.js from 18 on will do).
 export class Browser {
-  static async Open(site) {
+  static async open(site) {
     const profile = mkdtempSync(join(tmpdir(), "cgfs-site-"));
     const binary = ["chromium", "chromium-browser"].find((name) => {
       try {
@@ -51,12 +51,12 @@ export class Browser {
       { stdio: ["ignore", "ignore", "ignore", "pipe", "pipe"] },
     );
     const browser = new Browser(process, profile, site);
-    const { targetId } = await browser.Send("Target.createTarget", { url: "about:blank" });
+    const { targetId } = await browser.send("Target.createTarget", { url: "about:blank" });
     browser.session = (
-      await browser.Send("Target.attachToTarget", { targetId, flatten: true })
+      await browser.send("Target.attachToTarget", { targetId, flatten: true })
     ).sessionId;
-    await browser.Send("Page.enable");
-    await browser.HearRequests(browser.session);
+    await browser.send("Page.enable");
+    await browser.hearRequests(browser.session);
     return browser;
   }
 
@@ -76,22 +76,22 @@ export class Browser {
     process.stdio[4].on("data", (chunk) => {
       const messages = (unread + chunk).split("\0");
       unread = messages.pop();
-      for (const text of messages) this.Answer(JSON.parse(text));
+      for (const text of messages) this.answer(JSON.parse(text));
     });
   }
 
   // Every request of a session (the page's, and each of its workers'), heard; the
   // workers' sessions are attached to as they start.
-  async HearRequests(session) {
-    await this.Send("Network.enable", {}, session);
-    await this.Send(
+  async hearRequests(session) {
+    await this.send("Network.enable", {}, session);
+    await this.send(
       "Target.setAutoAttach",
       { autoAttach: true, waitForDebuggerOnStart: true, flatten: true },
       session,
     );
   }
 
-  Event(message) {
+  event(message) {
     if (message.method === "Network.requestWillBeSent") {
       const url = message.params.request.url;
       if (
@@ -102,15 +102,15 @@ export class Browser {
         this.outside.push(url);
     } else if (message.method === "Target.attachedToTarget") {
       const session = message.params.sessionId;
-      this.HearRequests(session)
+      this.hearRequests(session)
         .catch(() => {})
-        .finally(() => this.Send("Runtime.runIfWaitingForDebugger", {}, session).catch(() => {}));
+        .finally(() => this.send("Runtime.runIfWaitingForDebugger", {}, session).catch(() => {}));
     }
   }
 
-  Answer(message) {
+  answer(message) {
     if (message.id === undefined) {
-      this.Event(message);
+      this.event(message);
       return;
     }
     const waiter = this.waiting.get(message.id);
@@ -122,15 +122,15 @@ export class Browser {
     }
   }
 
-  Send(method, params = {}, session = this.session) {
+  send(method, params = {}, session = this.session) {
     const id = this.next++;
     this.process.stdio[3].write(JSON.stringify({ id, method, params, sessionId: session }) + "\0");
     return new Promise((resolve, reject) => this.waiting.set(id, { resolve, reject }));
   }
 
   // The value of a JavaScript expression in the page (awaited when it is a promise).
-  async Evaluate(expression) {
-    const { result, exceptionDetails } = await this.Send("Runtime.evaluate", {
+  async evaluate(expression) {
+    const { result, exceptionDetails } = await this.send("Runtime.evaluate", {
       expression,
       awaitPromise: true,
       returnByValue: true,
@@ -142,8 +142,8 @@ export class Browser {
 
   // The page's canvas as [width, height, SHA-256 of its RGBA pixels], as PngDigest
   // (png.mjs) gives a PNG file's.
-  async CanvasDigest() {
-    return this.Evaluate(`(async () => {
+  async canvasDigest() {
+    return this.evaluate(`(async () => {
       const canvas = document.getElementById('canvas');
       const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
       const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', pixels));
@@ -151,21 +151,21 @@ export class Browser {
     })()`);
   }
 
-  async WaitFor(expression, what, seconds = 60) {
+  async waitFor(expression, what, seconds = 60) {
     for (let waited = 0; waited < seconds * 1000; waited += 50) {
-      if (await this.Evaluate(expression)) return true;
+      if (await this.evaluate(expression)) return true;
       await sleep(50);
     }
-    Fail(`${what}: not within ${seconds} s`);
+    fail(`${what}: not within ${seconds} s`);
     return false;
   }
 
-  async Open(page) {
+  async open(page) {
     const url = `file://${this.site}/${page}`;
-    await this.Send("Page.navigate", { url });
+    await this.send("Page.navigate", { url });
     // The page keeps the figure shown in its address: compared without the query.
     const bare = url.replace(/[?#].*$/, "");
-    return this.WaitFor(
+    return this.waitFor(
       `location.href.replace(/[?#].*$/, '') === ${JSON.stringify(bare)} && document.readyState === 'complete' && ` +
         "(document.getElementById('live')?.dataset.ready === 'yes' || " +
         "!document.getElementById('status')?.textContent.startsWith('Loading'))",
@@ -173,7 +173,7 @@ export class Browser {
     );
   }
 
-  async Key(key) {
+  async key(key) {
     const named = {
       ArrowUp: 38,
       ArrowDown: 40,
@@ -190,26 +190,26 @@ export class Browser {
       windowsVirtualKeyCode: code,
       code: named[key] ? key : `Key${key.toUpperCase()}`,
     };
-    await this.Send("Input.dispatchKeyEvent", {
+    await this.send("Input.dispatchKeyEvent", {
       type: "keyDown",
       ...common,
       text: named[key] ? undefined : key,
     });
-    await this.Send("Input.dispatchKeyEvent", { type: "keyUp", ...common });
+    await this.send("Input.dispatchKeyEvent", { type: "keyUp", ...common });
   }
 
   // Chooses files in the page's file input `selector`, as a reader does in the browser's
   // file picker (its change event follows).
-  async ChooseFiles(selector, paths) {
-    const { result } = await this.Send("Runtime.evaluate", {
+  async chooseFiles(selector, paths) {
+    const { result } = await this.send("Runtime.evaluate", {
       expression: `document.querySelector(${JSON.stringify(selector)})`,
     });
-    await this.Send("DOM.setFileInputFiles", { files: paths, objectId: result.objectId });
+    await this.send("DOM.setFileInputFiles", { files: paths, objectId: result.objectId });
   }
 
-  async Drag(fromX, fromY, right, down) {
+  async drag(fromX, fromY, right, down) {
     const mouse = (type, x, y, buttons) =>
-      this.Send("Input.dispatchMouseEvent", { type, x, y, button: "left", buttons, clickCount: 1 });
+      this.send("Input.dispatchMouseEvent", { type, x, y, button: "left", buttons, clickCount: 1 });
     await mouse("mousePressed", fromX, fromY, 1);
     for (let step = 1; step <= 4; ++step) {
       await mouse("mouseMoved", fromX + (right * step) / 4, fromY + (down * step) / 4, 1);
@@ -218,10 +218,10 @@ export class Browser {
   }
 
   // Asks Chromium to quit, and removes its profile once its last process has left it.
-  async Close() {
+  async close() {
     const exited = new Promise((done) => this.process.once("exit", done));
     this.session = undefined;
-    this.Send("Browser.close").catch(() => {});
+    this.send("Browser.close").catch(() => {});
     await Promise.race([exited, sleep(10000)]);
     this.process.kill();
     rmSync(this.profile, { recursive: true, force: true, maxRetries: 50, retryDelay: 100 });

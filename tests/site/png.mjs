@@ -7,20 +7,20 @@ import { deflateSync, inflateSync } from "node:zlib";
 
 // PNG's Paeth predictor: of the left, upper and upper-left bytes, the one nearest
 // to left + upper - upper-left.
-function Paeth(left, up, upLeft) {
+function paeth(left, up, upLeft) {
   const estimate = left + up - upLeft;
   const [toLeft, toUp, toUpLeft] = [left, up, upLeft].map((v) => Math.abs(estimate - v));
   return toLeft <= toUp && toLeft <= toUpLeft ? left : toUp <= toUpLeft ? up : upLeft;
 }
 
-// A PNG file as [width, height, SHA-256 of its RGBA pixels], as Browser.CanvasDigest
+// A PNG file as [width, height, SHA-256 of its RGBA pixels], as Browser.canvasDigest
 // (browser.mjs) gives a page's canvas.
-export function PngDigest(path) {
-  const image = ReadPng(path);
+export function pngDigest(path) {
+  const image = readPng(path);
   return [image.width, image.height, createHash("sha256").update(image.rgba).digest("hex")];
 }
 
-export function ReadPng(path) {
+export function readPng(path) {
   const file = readFileSync(path);
   let width = 0,
     height = 0,
@@ -52,7 +52,7 @@ export function ReadPng(path) {
     for (let i = 0; i < stride; ++i) {
       const left = i >= channels ? row[i - channels] : 0;
       const upLeft = i >= channels ? above[i - channels] : 0;
-      const predicted = [0, left, above[i], (left + above[i]) >> 1, Paeth(left, above[i], upLeft)];
+      const predicted = [0, left, above[i], (left + above[i]) >> 1, paeth(left, above[i], upLeft)];
       row[i] = (row[i] + predicted[filter]) & 255;
     }
     for (let x = 0; x < width; ++x) {
@@ -66,7 +66,7 @@ export function ReadPng(path) {
 }
 
 // CRC-32 of PNG's chunks (ISO 3309), a byte at a time.
-function Crc32(bytes) {
+function crc32(bytes) {
   let crc = ~0;
   for (const byte of bytes) {
     crc ^= byte;
@@ -77,13 +77,13 @@ function Crc32(bytes) {
 
 // Writes RGBA bytes as an 8-bit RGBA PNG (every row filtered with None): a page's
 // picture, for the native tools to read (check_your_code.mjs hands one to cgfs-compare).
-export function WritePng(path, width, height, rgba) {
+export function writePng(path, width, height, rgba) {
   const chunk = (type, body) => {
     const head = Buffer.alloc(8);
     head.writeUInt32BE(body.length, 0);
     head.write(type, 4, "latin1");
     const crc = Buffer.alloc(4);
-    crc.writeUInt32BE(Crc32(Buffer.concat([head.subarray(4), body])), 0);
+    crc.writeUInt32BE(crc32(Buffer.concat([head.subarray(4), body])), 0);
     return Buffer.concat([head, body, crc]);
   };
   const header = Buffer.alloc(13);

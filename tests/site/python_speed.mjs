@@ -25,27 +25,27 @@ const file = join(
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 const panel = (what) => `document.getElementById('code-panel').${what}`;
 
-const browser = await Browser.Open(site);
+const browser = await Browser.open(site);
 const starts = [];
 const page = [];
 const cpython = [];
 try {
   for (let round = 0; round < rounds; ++round) {
-    await browser.Open(`${chapter}/index.html`);
-    await browser.WaitFor(`${panel("dataset.ready")} === 'yes'`, "the panel");
-    await browser.Evaluate(`(() => { document.getElementById('tab-code').click(); const s = document.getElementById('code-language');
+    await browser.open(`${chapter}/index.html`);
+    await browser.waitFor(`${panel("dataset.ready")} === 'yes'`, "the panel");
+    await browser.evaluate(`(() => { document.getElementById('tab-code').click(); const s = document.getElementById('code-language');
       s.value = 'python'; s.dispatchEvent(new Event('change')); window.__chosen = performance.now(); })()`);
-    await browser.WaitFor('SupplyFor("python").readyNow >= 1', "Python started", 120);
-    starts.push(await browser.Evaluate("(performance.now() - window.__chosen) / 1000"));
-    await browser.WaitFor('SupplyFor("python").readyNow >= 2', "a second Python started", 120);
-    await browser.Evaluate(
+    await browser.waitFor('supplyFor("python").readyNow >= 1', "Python started", 120);
+    starts.push(await browser.evaluate("(performance.now() - window.__chosen) / 1000"));
+    await browser.waitFor('supplyFor("python").readyNow >= 2', "a second Python started", 120);
+    await browser.evaluate(
       `document.querySelector('#code-panel .CodeMirror').CodeMirror.setValue(${JSON.stringify(readFileSync(file, "utf8"))})`,
     );
-    await browser.Evaluate(`(() => { document.getElementById('code-figure').value = '${figure}';
+    await browser.evaluate(`(() => { document.getElementById('code-figure').value = '${figure}';
       document.getElementById('code-draw').click(); })()`);
     await sleep(100);
-    await browser.WaitFor(`${panel("dataset.busy")} === ''`, "the draw", 600);
-    const status = await browser.Evaluate("document.getElementById('code-status').textContent");
+    await browser.waitFor(`${panel("dataset.busy")} === ''`, "the draw", 600);
+    const status = await browser.evaluate("document.getElementById('code-status').textContent");
     const seconds = /drawn with your functions in ([\d.]+) s/.exec(status)?.[1];
     if (!seconds) throw new Error(`the page's draw: ${status}`);
     page.push(Number(seconds));
@@ -62,7 +62,7 @@ try {
     );
   }
 } finally {
-  await browser.Close();
+  await browser.close();
 }
 const version = spawnSync("python3", ["--version"], { encoding: "utf8" }).stdout.trim();
 console.log(

@@ -28,7 +28,7 @@ const live = document.getElementById("live");
 const canvas = document.getElementById("canvas");
 // Each figure's size: its golden image's (600 x 600, the programs' default, without one).
 const sizes = JSON.parse(live.dataset.sizes);
-const SizeOf = (name) => sizes[name] ?? [600, 600];
+const sizeOf = (name) => sizes[name] ?? [600, 600];
 
 let figuresWorker = null;
 let figures = []; // {name, caption, hasCamera, costPartner, hasCostView, button}
@@ -41,7 +41,7 @@ let drawing = false; // a Draw loop is running
 let generation = 0; // counts the worker's restarts: a loop of an earlier one stops
 let siteModel = ""; // the name of the site's model drawn (models.js), '' when none
 
-function Say(id, text) {
+function say(id, text) {
   const element = document.getElementById(id);
   element.textContent = text;
   element.hidden = text === "";
@@ -49,7 +49,7 @@ function Say(id, text) {
 
 // Puts a frame on the canvas: a full one as it is, a preview stretched to the figure's
 // size (as the window does).
-function Show(frame, full, width, height) {
+function showFrame(frame, full, width, height) {
   const image = new ImageData(
     new Uint8ClampedArray(frame.pixels.buffer),
     frame.width,
@@ -71,7 +71,7 @@ function Show(frame, full, width, height) {
 
 // Draws the figure shown, in the worker, at its full size or while the camera moves at
 // the preview size; one frame at a time, the latest one wanted next.
-async function Draw(full) {
+async function draw(full) {
   wanted = full || wanted === "full" ? "full" : "preview";
   if (drawing) return;
   drawing = true;
@@ -81,8 +81,8 @@ async function Draw(full) {
     wanted = null;
     const index = shown;
     const figure = figures[index];
-    const [width, height] = SizeOf(figure.name);
-    const frame = await figuresWorker.Request({
+    const [width, height] = sizeOf(figure.name);
+    const frame = await figuresWorker.request({
       op: "draw",
       index,
       width,
@@ -92,13 +92,13 @@ async function Draw(full) {
     });
     if (frame.cancelled || index !== shown || mine !== generation) continue;
     if (frame.problem) {
-      Say("problem", `${figure.name} could not be drawn: ${frame.problem}`);
+      say("problem", `${figure.name} could not be drawn: ${frame.problem}`);
       continue;
     }
-    Show(frame, isFull, width, height);
+    showFrame(frame, isFull, width, height);
     const time =
       frame.milliseconds < 10 ? frame.milliseconds.toFixed(1) : frame.milliseconds.toFixed(0);
-    Say(
+    say(
       "status",
       `${figure.name}: ${frame.width} × ${frame.height} drawn in ${time} ms` +
         (isFull ? "" : ", at half size while the camera moves") +
@@ -111,7 +111,7 @@ async function Draw(full) {
 }
 
 // The address: the figure shown, and its view where it has a camera.
-function Address() {
+function address() {
   const figure = figures[shown];
   const query = new URLSearchParams(siteModel ? { model: siteModel } : {});
   query.set("figure", figure.name);
@@ -119,18 +119,18 @@ function Address() {
   return "?" + query.toString();
 }
 
-function ShowView() {
+function showView() {
   const figure = figures[shown];
   document.getElementById("camera").hidden = !figure.hasCamera;
   document.getElementById("view").textContent = view;
-  document.getElementById("view-link").href = Address();
-  history.replaceState(null, "", Address());
+  document.getElementById("view-link").href = address();
+  history.replaceState(null, "", address());
 }
 
 // Gives up the frame being drawn, if any: the worker is ended and made anew.
-function StopDrawing() {
-  if (figuresWorker.Busy) {
-    figuresWorker.Restart();
+function stopDrawing() {
+  if (figuresWorker.busy) {
+    figuresWorker.restart();
     ++generation;
     drawing = false;
   }
@@ -139,13 +139,13 @@ function StopDrawing() {
 // Shows figure `index`: its button pressed, its caption, then its frame. A figure still
 // being drawn is given up (the worker is ended and made anew: the business card takes
 // seconds).
-function Select(index) {
-  StopDrawing();
+function selectFigure(index) {
+  stopDrawing();
   shown = index;
   figures.forEach((figure, i) => figure.button.setAttribute("aria-checked", i === index));
   figures[index].button.scrollIntoView({ block: "nearest" });
-  Say("caption", figures[index].caption);
-  Say("status", `drawing ${figures[index].name}…`);
+  say("caption", figures[index].caption);
+  say("status", `drawing ${figures[index].name}…`);
   document.dispatchEvent(new CustomEvent("cgfs-shown", { detail: figures[index].name }));
   const partner = figures[index].costPartner;
   document.getElementById("cost").hidden = partner < 0;
@@ -154,49 +154,49 @@ function Select(index) {
       ? `where the work goes: ${figures[partner].name} (C)`
       : `back to ${figures[partner].name} (C)`;
   }
-  ShowView();
+  showView();
   delete canvas.dataset.drawn;
-  requestAnimationFrame(() => setTimeout(() => Draw(true)));
+  requestAnimationFrame(() => setTimeout(() => draw(true)));
 }
 
 // After the camera moved: a half-size frame as soon as the worker is free, the full one
 // once no key or drag has come for the settling time.
-function CameraMoved() {
-  ShowView();
+function cameraMoved() {
+  showView();
   delete canvas.dataset.drawn;
-  Draw(false);
+  draw(false);
   clearTimeout(settle);
-  settle = setTimeout(() => Draw(true), settleTime);
+  settle = setTimeout(() => draw(true), settleTime);
 }
 
 // Moves the camera in the worker (program/camera_controls.h's arithmetic); the moves
 // one after the other, each from the view the one before left.
 let moves = Promise.resolve();
-function MoveCamera(move) {
+function moveCamera(move) {
   moves = moves.then(async () => {
-    const answer = await figuresWorker.Request({ op: "camera", view, ...move });
+    const answer = await figuresWorker.request({ op: "camera", view, ...move });
     if (answer.cancelled) return;
     if (answer.problem) {
-      Say("problem", answer.problem);
+      say("problem", answer.problem);
       return;
     }
     view = answer.view;
-    CameraMoved();
+    cameraMoved();
   });
 }
 
-function OnKey(event) {
+function onKey(event) {
   if (event.altKey || event.ctrlKey || event.metaKey) return;
   if (event.target.closest?.("#your-code, input, textarea, select, .CodeMirror")) return;
   const key = event.key.length === 1 ? event.key.toLowerCase() : event.key;
   if (key === "ArrowLeft" || key === "ArrowRight") {
-    Select((shown + (key === "ArrowLeft" ? figures.length - 1 : 1)) % figures.length);
+    selectFigure((shown + (key === "ArrowLeft" ? figures.length - 1 : 1)) % figures.length);
   } else if (key === "c" && figures[shown].costPartner >= 0) {
-    Select(figures[shown].costPartner);
+    selectFigure(figures[shown].costPartner);
   } else if (figures[shown].hasCamera && kCameraKeys.includes(key)) {
-    MoveCamera({ key: kCameraKeys.indexOf(key) });
+    moveCamera({ key: kCameraKeys.indexOf(key) });
   } else if (figures[shown].hasCamera && key === "r") {
-    MoveCamera({ reset: true });
+    moveCamera({ reset: true });
   } else {
     return;
   }
@@ -205,7 +205,7 @@ function OnKey(event) {
 
 // Dragging the picture turns the camera, by the canvas's own pixels (the page may
 // show the canvas smaller than it is).
-function FollowDrags() {
+function followDrags() {
   let last = null;
   canvas.addEventListener("pointerdown", (event) => {
     if (event.button !== 0 || !figures[shown].hasCamera) return;
@@ -220,7 +220,7 @@ function FollowDrags() {
     const down = Math.round((event.clientY - last[1]) * scale);
     if (right === 0 && down === 0) return;
     last = [last[0] + right / scale, last[1] + down / scale];
-    MoveCamera({ drag: [right, down] });
+    moveCamera({ drag: [right, down] });
   });
   const stop = () => {
     last = null;
@@ -231,10 +231,10 @@ function FollowDrags() {
 
 // The buttons that walk and turn the camera on a screen without keys: each a key of
 // kCameraKeys, repeated while held.
-function CameraButtons() {
+function cameraButtons() {
   for (const button of document.querySelectorAll("#camera-pad button[data-key]")) {
     let repeat = null;
-    const press = () => MoveCamera({ key: Number(button.dataset.key) });
+    const press = () => moveCamera({ key: Number(button.dataset.key) });
     button.addEventListener("pointerdown", (event) => {
       event.preventDefault();
       press();
@@ -247,12 +247,12 @@ function CameraButtons() {
   }
   document
     .getElementById("camera-reset")
-    .addEventListener("click", () => MoveCamera({ reset: true }));
+    .addEventListener("click", () => moveCamera({ reset: true }));
 }
 
 // The figure and view the address asks for, or the chapter's opening figure; what
 // cannot be shown is said.
-async function Opening() {
+async function findOpening() {
   const query = new URLSearchParams(location.search);
   const problems = [];
   const opening = figures.findIndex((figure) => figure.name === live.dataset.opening);
@@ -273,7 +273,7 @@ async function Opening() {
         `${figures[index].name} has no camera to move; the view "${query.get("view")}" is not used.`,
       );
     } else {
-      const answer = await figuresWorker.Request({ op: "camera", set: query.get("view") });
+      const answer = await figuresWorker.request({ op: "camera", set: query.get("view") });
       if (answer.problem)
         problems.push(
           `No view "${query.get("view")}": ${answer.problem}; the chapter's own view is shown.`,
@@ -281,14 +281,14 @@ async function Opening() {
       else view = answer.view;
     }
   }
-  Say("problem", problems.join(" "));
+  say("problem", problems.join(" "));
   return index;
 }
 
 // The figures, in two lists: the figures, and the views of where the work goes (those
 // another figure's C switches to). Lists there were are replaced, and the view is the
 // chapter's again (a model's figures replace the chapter's, models.js).
-function ListFigures(described) {
+function listFigures(described) {
   document.getElementById("figures").replaceChildren();
   document.getElementById("cost-views").replaceChildren();
   figures = [];
@@ -300,7 +300,7 @@ function ListFigures(described) {
     figure.button.type = "button";
     figure.button.textContent = figure.name;
     figure.button.setAttribute("role", "radio");
-    figure.button.addEventListener("click", () => Select(i));
+    figure.button.addEventListener("click", () => selectFigure(i));
     document.getElementById(isCostView(figure) ? "cost-views" : "figures").append(figure.button);
     figures.push(figure);
   }
@@ -316,7 +316,7 @@ function ListFigures(described) {
   // How many there are: the list shows three rows, and scrolls.
   const costViews = figures.filter(isCostView).length;
   const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
-  Say(
+  say(
     "figures-count",
     plural(figures.length - costViews, "figure", "figures") +
       (costViews ? ` and ${plural(costViews, "view", "views")} of where the work goes` : "") +
@@ -327,7 +327,7 @@ function ListFigures(described) {
 // The other column's two tabs: the chapter's README, and the reader's own code. On a
 // wide screen the code's tab shows the README beside the editor, in place of the
 // figures (site.css: main[data-tab="tab-code"]); on a narrow one, the editor alone.
-function Tabs() {
+function setUpTabs() {
   const tabs = [
     ["tab-readme", "readme"],
     ["tab-code", "your-code"],
@@ -359,7 +359,7 @@ function Tabs() {
 // value shows that figure; showing a figure sets the control it belongs to. A value
 // chosen here is told to the Your code panel (the event cgfs-figure), which draws the
 // reader's own beside it when asked.
-function Controls() {
+function setUpControls() {
   const box = document.getElementById("controls");
   if (!box) return;
   const groups = JSON.parse(box.dataset.controls);
@@ -380,7 +380,7 @@ function Controls() {
       radio.addEventListener("change", () => {
         const index = figures.findIndex((each) => each.name === figure);
         if (index < 0) return;
-        Select(index);
+        selectFigure(index);
         document.dispatchEvent(new CustomEvent("cgfs-figure", { detail: figure }));
       });
       choice.append(radio, ` ${label}`);
@@ -395,33 +395,33 @@ function Controls() {
   });
 }
 
-async function Start() {
-  Tabs();
-  Controls();
+async function start() {
+  setUpTabs();
+  setUpControls();
   figuresWorker = new FiguresWorker(
     live.dataset.module,
     CGFS_FIGURES_OF[live.dataset.chapter],
     (fraction) => {
-      Say("status", `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
+      say("status", `drawing ${figures[shown].name}… ${Math.round(fraction * 100)} %`);
     },
   );
-  let described = await figuresWorker.Request({ op: "describe" });
+  let described = await figuresWorker.request({ op: "describe" });
   if (described.problem) throw new Error(described.problem);
   settleTime = described.settle;
-  if (document.getElementById("model")) described = (await ModelsStart()) ?? described;
-  ListFigures(described.figures);
+  if (document.getElementById("model")) described = (await modelsStart()) ?? described;
+  listFigures(described.figures);
   document
     .getElementById("cost")
-    .addEventListener("click", () => Select(figures[shown].costPartner));
-  document.getElementById("reset").addEventListener("click", () => MoveCamera({ reset: true }));
-  document.addEventListener("keydown", OnKey);
-  FollowDrags();
-  CameraButtons();
-  Select(await Opening());
+    .addEventListener("click", () => selectFigure(figures[shown].costPartner));
+  document.getElementById("reset").addEventListener("click", () => moveCamera({ reset: true }));
+  document.addEventListener("keydown", onKey);
+  followDrags();
+  cameraButtons();
+  selectFigure(await findOpening());
   live.dataset.ready = "yes";
 }
 
-Start().catch((error) => {
-  Say("status", "");
-  Say("problem", `The chapter's code could not be loaded: ${error.message ?? error}`);
+start().catch((error) => {
+  say("status", "");
+  say("problem", `The chapter's code could not be loaded: ${error.message ?? error}`);
 });

@@ -17,7 +17,7 @@ const kSiteRoot = new URL(".", document.currentScript.src);
 // binaries itself, off the page's thread (decoded here, 18 MB froze the page for
 // seconds). The script's global is emptied once read (a `var` cannot be deleted).
 let pyodideAssets = null;
-function PyodideAssets() {
+function loadPyodideAssets() {
   pyodideAssets ??= new Promise((resolve, reject) => {
     const script = document.createElement("script");
     script.src = new URL("vendor/pyodide.js", kSiteRoot).href;
@@ -32,21 +32,21 @@ function PyodideAssets() {
   return pyodideAssets;
 }
 
-const WorkerAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
+const workerAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
 
 // One worker: requests answered one at a time, each within its limit (seconds) or the
 // worker is ended. `onProgress(fraction)` hears a draw's progress.
 class CodeWorker {
   // onProgress(fraction): how far Python's start has come.
-  static async Start(language, onProgress) {
+  static async start(language, onProgress) {
     const worker = new CodeWorker(language, onProgress);
     if (language === "python") {
-      const answer = await worker.Request(
-        { op: "init", assets: await PyodideAssets(), runner: CGFS_SOURCES.pythonRunner },
+      const answer = await worker.request(
+        { op: "init", assets: await loadPyodideAssets(), runner: CGFS_SOURCES.pythonRunner },
         300,
       );
       if (!answer.ready) {
-        worker.End();
+        worker.end();
         throw new Error(
           `Python could not be started: ${answer.unreadable ?? "it took more than 300 s"}`,
         );
@@ -57,8 +57,8 @@ class CodeWorker {
 
   constructor(language, onProgress = () => {}) {
     CodeWorker.addresses ??= {
-      javascript: WorkerAddress(CGFS_SOURCES.jsWorker),
-      python: WorkerAddress(CGFS_SOURCES.pythonWorker),
+      javascript: workerAddress(CGFS_SOURCES.jsWorker),
+      python: workerAddress(CGFS_SOURCES.pythonWorker),
     };
     this.worker = new Worker(CodeWorker.addresses[language]);
     this.next = 1;
@@ -72,19 +72,19 @@ class CodeWorker {
     };
   }
 
-  get Alive() {
+  get alive() {
     return this.worker !== null;
   }
 
   // The answer, or { timeout: true } when there was none within `seconds` (the worker
   // is ended then).
-  Request(message, seconds) {
-    if (!this.Alive) return Promise.resolve({ timeout: true });
+  request(message, seconds) {
+    if (!this.alive) return Promise.resolve({ timeout: true });
     const id = this.next++;
     return new Promise((resolve) => {
       const timer = setTimeout(() => {
         this.waiting = null;
-        this.End();
+        this.end();
         resolve({ timeout: true });
       }, seconds * 1000);
       this.waiting = {
@@ -99,7 +99,7 @@ class CodeWorker {
     });
   }
 
-  End() {
+  end() {
     this.worker?.terminate();
     this.worker = null;
     this.waiting?.resolve({ cancelled: true });
@@ -119,15 +119,15 @@ class WorkerSupply {
   }
 
   // Starts workers until `target` are ready or starting, one at a time.
-  Fill() {
+  fill() {
     if (this.starting || this.ready.length >= this.target) return;
     const entry = { listener: null };
-    entry.promise = CodeWorker.Start(this.language, (fraction) => entry.listener?.(fraction));
+    entry.promise = CodeWorker.start(this.language, (fraction) => entry.listener?.(fraction));
     this.starting = true;
     this.ready.push(entry);
     const started = () => {
       this.starting = false;
-      this.Fill();
+      this.fill();
     };
     entry.promise.then(
       () => {
@@ -142,8 +142,8 @@ class WorkerSupply {
   }
 
   // Python started ahead, as soon as the reader chooses it.
-  Warm(onStarting = () => {}) {
-    this.Fill();
+  warm(onStarting = () => {}) {
+    this.fill();
     this.ready[0].listener = onStarting;
     this.ready[0].promise.then(
       () => onStarting(1),
@@ -154,8 +154,8 @@ class WorkerSupply {
   // A worker no code has run in (the oldest made ready). The supply is filled again by
   // RefillWorkers, once the check or draw is over: a worker started meanwhile would take
   // a core from it.
-  async Take(onProgress, onStarting = () => {}) {
-    if (this.ready.length === 0) this.Fill();
+  async take(onProgress, onStarting = () => {}) {
+    if (this.ready.length === 0) this.fill();
     const entry = this.ready.shift();
     entry.listener = onStarting;
     const worker = await entry.promise;
@@ -171,17 +171,17 @@ class WorkerSupply {
 }
 
 const supplies = {};
-const SupplyFor = (language) => (supplies[language] ??= new WorkerSupply(language));
+const supplyFor = (language) => (supplies[language] ??= new WorkerSupply(language));
 // After a check or a draw: workers made ready again for the next.
-const RefillWorkers = () => Object.values(supplies).forEach((supply) => supply.Fill());
+const refillWorkers = () => Object.values(supplies).forEach((supply) => supply.fill());
 
 // The reader's code loaded in a fresh worker: the account it gives of itself, held
 // against its syntax (read first, before any of it ran). Throws CheckError with the
 // command line's words when it does not load.
-async function LoadInWorker(worker, { code, file, functions, names }) {
+async function loadInWorker(worker, { code, file, functions, names }) {
   const { CheckError, LOAD_LIMIT, heldAgainstFile, isAccount } = CGFS_CHECK;
-  const declared = await worker.Request({ op: "declare", code }, LOAD_LIMIT);
-  const message = await worker.Request({ op: "load", code, file, functions, names }, LOAD_LIMIT);
+  const declared = await worker.request({ op: "declare", code }, LOAD_LIMIT);
+  const message = await worker.request({ op: "load", code, file, functions, names }, LOAD_LIMIT);
   if (message.timeout)
     throw new CheckError(`your code does not load: still running after ${LOAD_LIMIT} s`);
   if (typeof message.load_error === "string")
@@ -226,26 +226,26 @@ class PageRunner {
   async load(functions, names) {
     this.loadRequest = { code: this.code, file: this.file, functions, names };
     if (this.language === "python") this.onStatus("starting Python (Pyodide)…");
-    this.worker = await SupplyFor(this.language).Take(null, this.onStarting);
+    this.worker = await supplyFor(this.language).take(null, this.onStarting);
     this.onStatus("checking…");
     this.started = Date.now();
-    return LoadInWorker(this.worker, this.loadRequest);
+    return loadInWorker(this.worker, this.loadRequest);
   }
 
   async run(request) {
     // Stop pressed: no case after it runs (each would take a new worker, and an endless
     // function its full time limit).
     if (this.ended || Date.now() - this.started > this.bound) return { stopped: true };
-    if (!this.worker.Alive) {
+    if (!this.worker.alive) {
       // the last case ran out of time: a new worker
-      this.worker = await SupplyFor(this.language).Take();
+      this.worker = await supplyFor(this.language).take();
       try {
-        await LoadInWorker(this.worker, this.loadRequest);
+        await loadInWorker(this.worker, this.loadRequest);
       } catch {
         return { garbled: "a new worker for this case could not load your code" };
       }
     }
-    const answer = await this.worker.Request({ op: "case", request }, this.timeLimit);
+    const answer = await this.worker.request({ op: "case", request }, this.timeLimit);
     if (this.ended) return { stopped: true }; // Stop pressed while this case ran
     if (answer.timeout) return { timeout: true, limit: this.timeLimit };
     delete answer.id;
@@ -262,15 +262,15 @@ class PageRunner {
   }
 
   // Stop: the case running ends with its worker, and no other runs.
-  End() {
+  end() {
     this.ended = true;
-    this.worker?.End();
+    this.worker?.end();
   }
 }
 
 // A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },
 // or { problem } (one line), or { cancelled } when `cancel` was called first.
-async function DrawWithCode({
+async function drawWithCode({
   language,
   code,
   file,
@@ -285,21 +285,21 @@ async function DrawWithCode({
   onStarting = () => {},
 }) {
   if (language === "python") onStatus("starting Python (Pyodide)…");
-  const worker = await SupplyFor(language).Take(onProgress, onStarting);
+  const worker = await supplyFor(language).take(onProgress, onStarting);
   worker.onPreview = onPreview;
-  DrawWithCode.current = worker;
+  drawWithCode.current = worker;
   try {
     onStatus("loading your code…");
-    await LoadInWorker(worker, { code, file, functions, names });
+    await loadInWorker(worker, { code, file, functions, names });
     onStatus("drawing…");
-    const answer = await worker.Request({ op: "draw", recipe, kinds }, seconds);
+    const answer = await worker.request({ op: "draw", recipe, kinds }, seconds);
     if (answer.timeout) return { problem: `still drawing after ${seconds} s` };
     return answer;
   } catch (error) {
     return { problem: error.message };
   } finally {
-    worker.End();
-    DrawWithCode.current = null;
+    worker.end();
+    drawWithCode.current = null;
   }
 }
-DrawWithCode.Cancel = () => DrawWithCode.current?.End();
+drawWithCode.Cancel = () => drawWithCode.current?.end();

@@ -25,38 +25,38 @@ class ComparisonView {
     this.blinkShowsYours = false;
     this.images = null;
     for (const radio of document.querySelectorAll('input[name="code-view"]')) {
-      radio.addEventListener("change", () => this.ShowView(radio.value));
+      radio.addEventListener("change", () => this.showView(radio.value));
     }
-    this.wipe.addEventListener("input", () => this.DrawOverlay());
-    this.blink.addEventListener("change", () => this.Blink(this.blink.checked));
+    this.wipe.addEventListener("input", () => this.drawOverlay());
+    this.blink.addEventListener("change", () => this.blink(this.blink.checked));
     for (const canvas of [...Object.values(this.canvases), this.overlay]) {
-      canvas.addEventListener("click", (event) => this.ZoomAtClick(canvas, event));
+      canvas.addEventListener("click", (event) => this.zoomAtClick(canvas, event));
     }
   }
 
   // ours, yours, difference: RGBA bytes of width x height; first: the first differing
   // pixel ({ column, row }, column -1 when none); colours: the difference's legend.
-  Show({ ours, yours, difference, width, height, first, colours }) {
+  show({ ours, yours, difference, width, height, first, colours }) {
     this.images = { ours, yours, difference, width, height };
     for (const [name, pixels] of Object.entries({ ours, yours, difference })) {
-      ComparisonView.PutOn(this.canvases[name], pixels, width, height);
+      ComparisonView.putOn(this.canvases[name], pixels, width, height);
     }
     if (first.column >= 0) {
-      ComparisonView.Ring(this.canvases.yours, first.column, first.row);
-      ComparisonView.Ring(this.canvases.difference, first.column, first.row);
+      ComparisonView.ring(this.canvases.yours, first.column, first.row);
+      ComparisonView.ring(this.canvases.difference, first.column, first.row);
     }
     this.overlay.width = width;
     this.overlay.height = height;
-    this.DrawOverlay();
-    this.ShowLegend(colours);
-    this.Zoom(
+    this.drawOverlay();
+    this.showLegend(colours);
+    this.zoom(
       first.column >= 0 ? first.column : width >> 1,
       first.column >= 0 ? first.row : height >> 1,
       first.column >= 0 ? "the first differing pixel" : "the middle pixel (none differs)",
     );
   }
 
-  static PutOn(canvas, pixels, width, height) {
+  static putOn(canvas, pixels, width, height) {
     canvas.width = width;
     canvas.height = height;
     canvas
@@ -65,7 +65,7 @@ class ComparisonView {
   }
 
   // A ring around a pixel, on a picture.
-  static Ring(canvas, column, row) {
+  static ring(canvas, column, row) {
     const context = canvas.getContext("2d");
     context.lineWidth = Math.max(2, canvas.width / 150);
     for (const [color, radius] of [
@@ -79,15 +79,15 @@ class ComparisonView {
     }
   }
 
-  ShowView(which) {
+  showView(which) {
     document.getElementById("code-three").hidden = which !== "three";
     document.getElementById("code-one").hidden = which !== "one";
-    if (which !== "one") this.Blink(false);
+    if (which !== "one") this.blink(false);
   }
 
   // One picture: the reader's left of the slider, ours right of it; blinking, each in
   // turn, the whole picture.
-  DrawOverlay() {
+  drawOverlay() {
     if (!this.images) return;
     const { ours, yours, width, height } = this.images;
     const context = this.overlay.getContext("2d");
@@ -113,20 +113,20 @@ class ComparisonView {
         : "yours left of the line, ours right of it";
   }
 
-  Blink(on) {
+  blink(on) {
     clearInterval(this.blinkTimer);
     this.blinkTimer = null;
     this.blink.checked = on;
     if (on) {
       this.blinkTimer = setInterval(() => {
         this.blinkShowsYours = !this.blinkShowsYours;
-        this.DrawOverlay();
+        this.drawOverlay();
       }, kBlinkMilliseconds);
     }
-    this.DrawOverlay();
+    this.drawOverlay();
   }
 
-  ShowLegend(colours) {
+  showLegend(colours) {
     const legend = document.getElementById("code-legend");
     legend.replaceChildren(
       ...colours.map(({ rgb, name, meaning }) => {
@@ -143,17 +143,17 @@ class ComparisonView {
     legend.append(faded);
   }
 
-  ZoomAtClick(canvas, event) {
+  zoomAtClick(canvas, event) {
     if (!this.images) return;
     // (offsetX and offsetY are from the picture's corner inside its border)
     const column = Math.floor((event.offsetX * canvas.width) / canvas.clientWidth);
     const row = Math.floor((event.offsetY * canvas.height) / canvas.clientHeight);
-    this.Zoom(column, row, "the pixel clicked");
+    this.zoom(column, row, "the pixel clicked");
   }
 
   // The magnifier: kZoomPixels across around (column, row) of ours, yours and the
   // difference, the pixel itself outlined, and its two colours in words.
-  Zoom(column, row, what) {
+  zoom(column, row, what) {
     const { width, height } = this.images;
     column = Math.min(Math.max(column, 0), width - 1);
     row = Math.min(Math.max(row, 0), height - 1);

@@ -13,10 +13,10 @@ class EditorMarks {
     this.editor = editor;
     this.onShow = onShow;
     this.errorLine = null;
-    this.editor.on("change", () => this.Stale());
+    this.editor.on("change", () => this.stale());
   }
 
-  Clear() {
+  clear() {
     this.editor.clearGutter(kMarksGutter);
     if (this.errorLine !== null)
       this.editor.removeLineClass(this.errorLine, "background", "code-error-line");
@@ -24,7 +24,7 @@ class EditorMarks {
     this.editor.getWrapperElement().dataset.marks = "";
   }
 
-  Mark(line, passed, title, onClick) {
+  mark(line, passed, title, onClick) {
     const mark = document.createElement("button");
     mark.type = "button";
     mark.className = `code-mark ${passed ? "pass" : "fail"}`;
@@ -37,8 +37,8 @@ class EditorMarks {
 
   // A check's records (one per case: its function and status): each function's verdict
   // beside its definition in the code.
-  ShowChecked(records, language) {
-    this.Clear();
+  showChecked(records, language) {
+    this.clear();
     const code = this.editor.getValue();
     const byFunction = new Map();
     for (const { function: name, status } of records) {
@@ -51,7 +51,7 @@ class EditorMarks {
       const ran = statuses.filter((status) => status !== "not written" && status !== "not checked");
       if (line < 0 || ran.length === 0) continue;
       const failed = ran.filter((status) => status !== "pass").length;
-      this.Mark(
+      this.mark(
         line,
         failed === 0,
         failed === 0
@@ -65,19 +65,19 @@ class EditorMarks {
   }
 
   // A message that names a line of the file (`(at FILE:LINE)`): a ✗ there, the line tinted.
-  ShowError(message, file) {
-    this.Clear();
+  showError(message, file) {
+    this.clear();
     const found = new RegExp(`\\(at ${file.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")}:(\\d+)\\)`).exec(
       message,
     );
     if (!found) return;
     const line = Math.min(Number(found[1]), this.editor.lineCount()) - 1;
-    this.Mark(line, false, message.split("\n")[0]);
+    this.mark(line, false, message.split("\n")[0]);
     this.errorLine = this.editor.addLineClass(line, "background", "code-error-line");
     this.editor.getWrapperElement().dataset.marks = `line ${line + 1}:error`;
   }
 
-  Stale() {
+  stale() {
     for (const mark of this.editor.getWrapperElement().querySelectorAll(".code-mark:not(.stale)")) {
       mark.classList.add("stale");
       mark.title = `before your last change: ${mark.title}`;
@@ -85,7 +85,7 @@ class EditorMarks {
   }
 
   // The function among `names` whose definition is the last at or above the cursor.
-  FunctionAtCursor(names, language) {
+  functionAtCursor(names, language) {
     const code = this.editor.getValue();
     const cursor = this.editor.getCursor().line;
     let best = null;

@@ -15,10 +15,10 @@ class FiguresWorker {
     this.next = 1;
     this.pending = new Map();
     this.configuration = null; // the options message the figures are made with, if any
-    this.Start();
+    this.start();
   }
 
-  Start() {
+  start() {
     this.worker = new Worker(this.url);
     // A new worker is given the options its figures were made with before anything else
     // (its answer, id 0, is no one's).
@@ -39,7 +39,7 @@ class FiguresWorker {
     };
   }
 
-  Request(message, transfer = []) {
+  request(message, transfer = []) {
     const id = this.next++;
     return new Promise((resolve) => {
       this.pending.set(id, resolve);
@@ -49,23 +49,23 @@ class FiguresWorker {
 
   // Sends an options message (figures_worker.js): if its options were read, they are
   // given again to every worker made after, which starts with the chapter's own.
-  async Configure(message) {
-    const answer = await this.Request(message);
+  async configure(message) {
+    const answer = await this.request(message);
     if (!answer.problem && !answer.cancelled && answer.status === 0) this.configuration = message;
     return answer;
   }
 
   // Whether a request is being answered.
-  get Busy() {
+  get busy() {
     return this.pending.size > 0;
   }
 
   // Ends what the worker is doing (its requests answer { cancelled: true }) and starts
   // a new one.
-  Restart() {
+  restart() {
     this.worker.terminate();
     for (const resolve of this.pending.values()) resolve({ cancelled: true });
     this.pending.clear();
-    this.Start();
+    this.start();
   }
 }

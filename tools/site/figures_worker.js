@@ -41,11 +41,11 @@ const chapter = self[self.CGFS_MODULE]({
   },
 });
 
-function Text(module, pointer) {
+function textAt(module, pointer) {
   return module.UTF8ToString(pointer);
 }
 
-function SetView(module, view) {
+function setView(module, view) {
   if (view === undefined) return true;
   const text = module.allocateUTF8(view);
   const ok = module._SetView(text);
@@ -53,7 +53,7 @@ function SetView(module, view) {
   return ok;
 }
 
-function Pixels(module, bytes) {
+function copyPixels(module, bytes) {
   return new Uint8ClampedArray(module.HEAPU8.buffer, module._Pixels(), bytes).slice();
 }
 
@@ -68,7 +68,7 @@ const kMaxPixels = 4096 * 4096;
 // by its size as they refuse the file natively; one the browser cannot decode, as it is.
 // Alpha is dropped, as the native readers drop it (the canvas keeps colours multiplied
 // by alpha, so a half-transparent texel may differ from libpng's by one).
-async function ForTheChapter(bytes) {
+async function forTheChapter(bytes) {
   const png = [0x89, 0x50, 0x4e, 0x47],
     jpeg = [0xff, 0xd8, 0xff];
   const starts = (magic) => magic.every((byte, i) => bytes[i] === byte);
@@ -108,8 +108,8 @@ const operations = {
     const figures = [];
     for (let i = 0; i < module._FigureCount(); ++i) {
       figures.push({
-        name: Text(module, module._FigureName(i)),
-        caption: Text(module, module._FigureCaption(i)),
+        name: textAt(module, module._FigureName(i)),
+        caption: textAt(module, module._FigureCaption(i)),
         hasCamera: module._FigureHasCamera(i) === 1,
         costPartner: module._FigureCostPartner(i),
         hasCostView: module._FigureHasCostView(i) === 1,
@@ -118,20 +118,20 @@ const operations = {
     return {
       figures,
       settle: module._SettleMilliseconds(),
-      view: Text(module, module._ViewText()),
+      view: textAt(module, module._ViewText()),
     };
   },
 
   draw(module, { index, width, height, full, view }) {
-    if (!SetView(module, view)) return { problem: Text(module, module._LastError()) };
+    if (!setView(module, view)) return { problem: textAt(module, module._LastError()) };
     const [w, h] = full
       ? [width, height]
       : [module._PreviewSide(width), module._PreviewSide(height)];
     const start = performance.now();
-    if (!module._DrawFigure(index, w, h)) return { problem: Text(module, module._LastError()) };
+    if (!module._DrawFigure(index, w, h)) return { problem: textAt(module, module._LastError()) };
     const milliseconds = performance.now() - start;
-    const pixels = Pixels(module, w * h * 4);
-    const measured = Text(module, module._FigureMeasured(index));
+    const pixels = copyPixels(module, w * h * 4);
+    const measured = textAt(module, module._FigureMeasured(index));
     return {
       answer: { pixels, width: w, height: h, milliseconds, measured },
       transfer: [pixels.buffer],
@@ -140,14 +140,14 @@ const operations = {
 
   camera(module, { view, key, drag, reset, set }) {
     if (set !== undefined) {
-      if (!SetView(module, set)) return { problem: Text(module, module._LastError()) };
+      if (!setView(module, set)) return { problem: textAt(module, module._LastError()) };
     } else {
-      SetView(module, view);
+      setView(module, view);
       if (key !== undefined) module._PressCameraKey(key);
       if (drag !== undefined) module._DragCamera(drag[0], drag[1]);
       if (reset) module._ResetView();
     }
-    return { view: Text(module, module._ViewText()) };
+    return { view: textAt(module, module._ViewText()) };
   },
 
   compare(module, { index, width, height, rgba }) {
@@ -156,14 +156,14 @@ const operations = {
     module.HEAPU8.set(rgba, at);
     const verdict = module._CompareWithFigure(index, width, height, at);
     module._free(at);
-    if (verdict < 0) return { problem: Text(module, module._LastError()) };
-    const difference = Pixels(module, bytes);
+    if (verdict < 0) return { problem: textAt(module, module._LastError()) };
+    const difference = copyPixels(module, bytes);
     return {
       answer: {
         passed: verdict === 1,
-        text: Text(module, module._ComparisonText()),
+        text: textAt(module, module._ComparisonText()),
         difference,
-        colours: Text(module, module._DifferenceColours())
+        colours: textAt(module, module._DifferenceColours())
           .trim()
           .split("\n")
           .map((line) => {
@@ -190,7 +190,7 @@ operations.options = async (module, { files = [], words = [] }) => {
     if (name === "" || name === "." || name === ".." || /[/\n]/.test(name)) {
       return { problem: `${JSON.stringify(name)} cannot be a file's name here` };
     }
-    FS.writeFile(`${kFolder}/${name}`, await ForTheChapter(new Uint8Array(bytes)));
+    FS.writeFile(`${kFolder}/${name}`, await forTheChapter(new Uint8Array(bytes)));
   }
   said = [];
   const text = module.allocateUTF8(words.join("\n"));
@@ -201,7 +201,7 @@ operations.options = async (module, { files = [], words = [] }) => {
   return { status, lines, ...operations.describe(module) };
 };
 
-async function Answer(data) {
+async function answerRequest(data) {
   const module = await chapter;
   let result;
   try {
@@ -217,5 +217,5 @@ async function Answer(data) {
 // options' images are decoded asynchronously: a draw asked for meanwhile waits for them).
 let answered = Promise.resolve();
 onmessage = ({ data }) => {
-  answered = answered.then(() => Answer(data));
+  answered = answered.then(() => answerRequest(data));
 };

@@ -9,7 +9,7 @@
 // Shrinks RGBA pixels by a whole factor, each small pixel the darkest of the block
 // it covers, channel by channel: a line one pixel wide stays as dark as it was
 // (averaged, it would fade into the white).
-function Shrink(pixels, width, height, factor) {
+function shrink(pixels, width, height, factor) {
   const [small_width, small_height] = [Math.floor(width / factor), Math.floor(height / factor)];
   const small = new Uint8ClampedArray(small_width * small_height * 4).fill(255);
   for (let y = 0; y < small_height * factor; ++y) {
@@ -24,10 +24,10 @@ function Shrink(pixels, width, height, factor) {
   return new ImageData(small, small_width, small_height);
 }
 
-async function DrawThumbnail(canvas) {
+async function drawThumbnail(canvas) {
   const worker = new FiguresWorker(canvas.dataset.module, CGFS_FIGURES_OF[canvas.dataset.chapter]);
   try {
-    const { figures, problem } = await worker.Request({ op: "describe" });
+    const { figures, problem } = await worker.request({ op: "describe" });
     if (problem) throw new Error(problem);
     const index = Math.max(
       0,
@@ -35,9 +35,9 @@ async function DrawThumbnail(canvas) {
     );
     const name = figures[index].name;
     const [width, height] = JSON.parse(canvas.dataset.sizes)[name] ?? [600, 600]; // its golden image's
-    const frame = await worker.Request({ op: "draw", index, width, height, full: true });
+    const frame = await worker.request({ op: "draw", index, width, height, full: true });
     if (frame.problem) throw new Error(frame.problem);
-    const small = Shrink(frame.pixels, width, height, Math.ceil(width / canvas.width));
+    const small = shrink(frame.pixels, width, height, Math.ceil(width / canvas.width));
     canvas.width = small.width;
     canvas.height = small.height;
     canvas.getContext("2d").putImageData(small, 0, 0);
@@ -49,14 +49,14 @@ async function DrawThumbnail(canvas) {
   }
 }
 
-async function DrawThumbnails() {
-  for (const canvas of document.querySelectorAll("canvas.thumbnail")) await DrawThumbnail(canvas);
+async function drawThumbnails() {
+  for (const canvas of document.querySelectorAll("canvas.thumbnail")) await drawThumbnail(canvas);
   document.body.dataset.thumbnails = "drawn";
 }
 
 // Under each chapter's picture, how the reader's own code of it fared in its last full
 // check on the chapter's page (yourcode.js keeps it in this browser's storage).
-function ShowProgress() {
+function showProgress() {
   for (const canvas of document.querySelectorAll("canvas.thumbnail")) {
     let kept = null;
     try {
@@ -84,5 +84,5 @@ function ShowProgress() {
   }
 }
 
-ShowProgress();
-DrawThumbnails();
+showProgress();
+drawThumbnails();

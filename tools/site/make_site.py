@@ -222,7 +222,7 @@ class Site:
             for p in sorted((self.repo / "tests" / "cases").glob("*.json"))
         }
         self.controls = json.loads((SITE_FILES / "controls.json").read_text())["chapters"]
-        # The chapters whose figures a reader's functions draw (yourcode.js's Draw).
+        # The chapters whose figures a reader's functions draw (yourcode.js's draw).
         self.drawn_by_readers = json.loads((SITE_FILES / "drawings.json").read_text())["figures"]
         self.folder = SiteFolder(out)
         self.chapters = sorted(

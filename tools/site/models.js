@@ -15,7 +15,7 @@ const kMaxModelFileBytes = 128 * 1024 * 1024;
 const modelScripts = {}; // a site model's name -> the promise of its files
 
 // The site's model `name`: { open: its .obj's name, files: [{ name, bytes }] }.
-function SiteModel(name) {
+function loadSiteModel(name) {
   modelScripts[name] ??= new Promise((resolve, reject) => {
     const script = document.createElement("script");
     script.src = `../models/${encodeURIComponent(name)}.js`;
@@ -39,7 +39,7 @@ function SiteModel(name) {
 
 // The reader's files, chosen with the picker: { open, files }, or a line saying why they
 // cannot be drawn.
-async function OwnModel(chosen) {
+async function ownModel(chosen) {
   const objs = chosen.filter((file) => /\.obj$/i.test(file.name));
   if (objs.length !== 1) {
     return (
@@ -59,7 +59,7 @@ async function OwnModel(chosen) {
   return { open: objs[0].name, files };
 }
 
-function SayModel(lines) {
+function sayModel(lines) {
   const said = document.getElementById("model-said");
   said.textContent = lines.join("\n");
   said.hidden = lines.length === 0;
@@ -67,7 +67,7 @@ function SayModel(lines) {
 
 // The list's entry for the reader's own model while it is drawn ("your own: NAME", the
 // value '#own'), so that the list names what is drawn; none when `name` is null.
-function ShowOwnChoice(name) {
+function showOwnChoice(name) {
   const select = document.getElementById("model-choice");
   let option = select.querySelector('option[value="#own"]');
   if (name === null) {
@@ -84,15 +84,15 @@ function ShowOwnChoice(name) {
 // The chapter's figures made with `model` (none: its own): the figures as the worker
 // describes them, or null when the program refused the model (its line is shown, and
 // the figures stay as they were).
-async function UseModel(model) {
-  StopDrawing();
-  SayModel(model ? [`reading ${model.open}…`] : []);
-  const answer = await figuresWorker.Configure({
+async function useModel(model) {
+  stopDrawing();
+  sayModel(model ? [`reading ${model.open}…`] : []);
+  const answer = await figuresWorker.configure({
     op: "options",
     files: model?.files ?? [],
     words: model ? ["--model", model.open] : [],
   });
-  SayModel(answer.problem ? [answer.problem] : (answer.lines ?? []));
+  sayModel(answer.problem ? [answer.problem] : (answer.lines ?? []));
   if (answer.problem || answer.status !== 0) {
     // The line that says why is brought into view: it is below the picture.
     document.getElementById("model-said").scrollIntoView({ block: "nearest" });
@@ -104,31 +104,31 @@ async function UseModel(model) {
 // After a choice (`name`: a site model's, '' for none, '#own' for the reader's files):
 // the new figures listed and the first shown; a refused model leaves the figures, and
 // the list, as they were.
-async function ModelChosen(model, name) {
+async function modelChosen(model, name) {
   const select = document.getElementById("model-choice");
   const was = select.querySelector('option[value="#own"]') ? "#own" : siteModel;
-  const described = await UseModel(model);
+  const described = await useModel(model);
   if (!described) {
     select.value = was;
     return;
   }
-  ShowOwnChoice(name === "#own" ? model.open : null);
+  showOwnChoice(name === "#own" ? model.open : null);
   siteModel = name === "#own" ? "" : name;
   select.value = name;
-  ListFigures(described.figures);
-  Select(0);
+  listFigures(described.figures);
+  selectFigure(0);
 }
 
 // The picker's controls; and the site's model the address names (?model=NAME), drawn
 // before the page's first figure: its figures, or null for the chapter's own.
-async function ModelsStart() {
+async function modelsStart() {
   const select = document.getElementById("model-choice");
   const input = document.getElementById("model-files");
   select.addEventListener("change", async () => {
     try {
-      await ModelChosen(select.value ? await SiteModel(select.value) : null, select.value);
+      await modelChosen(select.value ? await loadSiteModel(select.value) : null, select.value);
     } catch (error) {
-      SayModel([error.message]);
+      sayModel([error.message]);
       select.value = select.querySelector('option[value="#own"]') ? "#own" : siteModel;
     }
   });
@@ -136,21 +136,21 @@ async function ModelsStart() {
     const chosen = Array.from(input.files);
     input.value = "";
     if (chosen.length === 0) return;
-    const model = await OwnModel(chosen);
-    if (typeof model === "string") SayModel([model]);
-    else await ModelChosen(model, "#own");
+    const model = await ownModel(chosen);
+    if (typeof model === "string") sayModel([model]);
+    else await modelChosen(model, "#own");
   });
   const asked = new URLSearchParams(location.search).get("model");
   if (!asked) return null;
   try {
-    const described = await UseModel(await SiteModel(asked));
+    const described = await useModel(await loadSiteModel(asked));
     if (described) {
       siteModel = asked;
       select.value = asked;
     }
     return described;
   } catch (error) {
-    SayModel([`${error.message}; the chapter's own figures are shown.`]);
+    sayModel([`${error.message}; the chapter's own figures are shown.`]);
     return null;
   }
 }

@@ -24,7 +24,7 @@ let pyodide = null;
 let runner = null;
 
 // Pyodide's files, answered from what the page sent; nothing else is to be had.
-function OfflineFetch(files) {
+function offlineFetch(files) {
   return async (address) => {
     const name = String(address?.url ?? address)
       .split("/")
@@ -40,24 +40,24 @@ function OfflineFetch(files) {
   };
 }
 
-const ScriptAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
+const scriptAddress = (text) => URL.createObjectURL(new Blob([text], { type: "text/javascript" }));
 
 // Pyodide's runtime (CGFS_PYODIDE_ASM) and loader (CGFS_PYODIDE_LOADER), as scripts.
-function LoadPyodideScripts({ asm, loader }) {
+function loadPyodideScripts({ asm, loader }) {
   const load = self.importScripts;
-  load.call(self, ScriptAddress(asm));
+  load.call(self, scriptAddress(asm));
   self.importScripts = () => {
     throw new Error("a classic worker, given its runtime");
   };
   try {
-    load.call(self, ScriptAddress(loader));
+    load.call(self, scriptAddress(loader));
   } finally {
     self.importScripts = load;
   }
 }
 
 // Base64 text as bytes (a worker's own work: the page's thread stays free).
-function Decoded(base64) {
+function decoded(base64) {
   const text = atob(base64);
   const bytes = new Uint8Array(text.length);
   for (let i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
@@ -68,12 +68,12 @@ const operations = {
   async init({ assets, runner: runnerText }) {
     const start = performance.now();
     postMessage({ progress: 0.05 });
-    self.fetch = OfflineFetch({
-      "pyodide.asm.wasm": Decoded(assets.wasm),
-      "python_stdlib.zip": Decoded(assets.stdlib),
+    self.fetch = offlineFetch({
+      "pyodide.asm.wasm": decoded(assets.wasm),
+      "python_stdlib.zip": decoded(assets.stdlib),
     });
     postMessage({ progress: 0.3 });
-    LoadPyodideScripts(assets);
+    loadPyodideScripts(assets);
     postMessage({ progress: 0.4 });
     pyodide = await CGFS_PYODIDE_LOADER.loadPyodide({
       indexURL: "https://pyodide.invalid/",

@@ -29,16 +29,16 @@
   };
 
   const $ = (id) => document.getElementById(id);
-  const StorageKey = (chapter, language) => `cgfs-code:${chapter}:${language}`;
+  const storageKey = (chapter, language) => `cgfs-code:${chapter}:${language}`;
   // Which functions of the chapter passed the last full check: read by the index (index.js).
-  const ProgressKey = (chapter) => `cgfs-progress:${chapter}`;
+  const progressKey = (chapter) => `cgfs-progress:${chapter}`;
   const kTypingPause = 1000; // milliseconds without typing before "check as I type" checks
   const kMostCode = 1 << 20; // bytes of code a file or a link may bring (a chapter is a few KB)
   // A link's code (#code=LANGUAGE:DEFLATED-BASE64URL), read before chapter.js rewrites the
   // address for the figure shown.
   const kLinked = /^#code=(javascript|python):([A-Za-z0-9_-]+)$/.exec(location.hash);
 
-  function Stored(key) {
+  function readStored(key) {
     try {
       return localStorage.getItem(key);
     } catch {
@@ -46,7 +46,7 @@
     }
   }
 
-  function Store(key, value) {
+  function store(key, value) {
     try {
       if (value === null) localStorage.removeItem(key);
       else localStorage.setItem(key, value);
@@ -58,22 +58,22 @@
 
   // What the editor opens on: the reader's code of this chapter, or of the chapter before
   // carried forward, or a starter.
-  function OpeningCode(language) {
+  function openingCode(language) {
     const { chapter, files, title } = yourCode;
-    const stored = Stored(StorageKey(chapter, language));
+    const stored = readStored(storageKey(chapter, language));
     if (stored !== null) return stored;
     const previous = CGFS_CHECK.previousChapter(chapter, files);
-    const before = previous && Stored(StorageKey(previous, language));
+    const before = previous && readStored(storageKey(previous, language));
     return before
       ? CGFS_CHECK.carriedForward(chapter, before, files, language, title)
       : CGFS_CHECK.freshStarter(chapter, files, language, title);
   }
 
-  function ShowCode(language, code, file) {
+  function showCode(language, code, file) {
     yourCode.language = language;
     yourCode.file =
       file ??
-      Stored(`${StorageKey(yourCode.chapter, language)}:file`) ??
+      readStored(`${storageKey(yourCode.chapter, language)}:file`) ??
       CGFS_CHECK.fileName(yourCode.chapter, language);
     $("code-language").value = language;
     $("code-auto-label").hidden = language !== "javascript";
@@ -85,11 +85,11 @@
     yourCode.editor.clearHistory();
   }
 
-  function Save() {
-    Store(StorageKey(yourCode.chapter, yourCode.language), yourCode.editor.getValue());
+  function save() {
+    store(storageKey(yourCode.chapter, yourCode.language), yourCode.editor.getValue());
   }
 
-  function Busy(what) {
+  function setBusy(what) {
     $("code-panel").dataset.busy = what ?? "";
     for (const id of [
       "code-check",
@@ -103,26 +103,27 @@
     }
     $("code-stop").hidden = what === null;
     if (what === null) {
-      ShowFunctionAtCursor(); // enabled only in one of the chapter's functions
-      RefillWorkers();
+      showFunctionAtCursor(); // enabled only in one of the chapter's functions
+      refillWorkers();
     }
   }
 
-  function Status(text) {
+  function setStatus(text) {
     $("code-status").textContent = text;
   }
 
   // How far Python's start has come (0 to 1), on its bar; the bar gone once it has started.
-  function PythonStarting(fraction) {
+  function pythonStarting(fraction) {
     $("code-python-start").hidden = fraction >= 1;
     $("code-python-start").value = fraction;
-    if (fraction < 1) Status(`starting Python (Pyodide)… ${Math.round(fraction * 100)} %`);
-    else if ($("code-status").textContent.startsWith("starting Python")) Status("Python is ready.");
+    if (fraction < 1) setStatus(`starting Python (Pyodide)… ${Math.round(fraction * 100)} %`);
+    else if ($("code-status").textContent.startsWith("starting Python"))
+      setStatus("Python is ready.");
   }
 
   // The report, a line to a span: a function's first line names it (data-function), for
   // the editor's marks to show.
-  function ShowReport(lines) {
+  function showReport(lines) {
     const names = new Set(
       CGFS_CHECK.functionsOf(CGFS_CHECK.sections(yourCode.chapter, yourCode.files)),
     );
@@ -138,7 +139,7 @@
   }
 
   // A function's first failed lines in the report, scrolled into view and lit.
-  function ShowInReport(name) {
+  function showInReport(name) {
     const line =
       [...$("code-report").querySelectorAll("span[data-function]")].find(
         (span) =>
@@ -152,13 +153,13 @@
   }
 
   // The chapter's function the cursor is in, for "check this function".
-  function FunctionAtCursor() {
+  function functionAtCursor() {
     const names = CGFS_CHECK.functionsOf(CGFS_CHECK.sections(yourCode.chapter, yourCode.files));
-    return yourCode.marks.FunctionAtCursor(names, yourCode.language);
+    return yourCode.marks.functionAtCursor(names, yourCode.language);
   }
 
-  function ShowFunctionAtCursor() {
-    const name = FunctionAtCursor();
+  function showFunctionAtCursor() {
+    const name = functionAtCursor();
     $("code-check-one").textContent = name ? `Check ${name}` : "Check one function";
     $("code-check-one").title = name
       ? `${name}'s cases alone (Shift+Ctrl+Enter), as --function ${name} does`
@@ -169,14 +170,14 @@
 
   // Check: the chapter's cases, and those of the chapters it keeps, on the reader's code;
   // only: one function's cases alone (as --function NAME).
-  async function Check(only = null) {
+  async function runCheck(only = null) {
     const { chapter, files, language } = yourCode;
     if (yourCode.running || $("code-panel").dataset.busy) return;
-    Save();
-    Busy("check");
+    save();
+    setBusy("check");
     $("code-report").textContent = "";
     $("code-report").dataset.failed = "";
-    yourCode.marks.Clear();
+    yourCode.marks.clear();
     const list = CGFS_CHECK.sections(chapter, files).map((section) =>
       only === null
         ? section
@@ -191,8 +192,8 @@
       file: yourCode.file,
       timeLimit: CGFS_CHECK.CASE_LIMIT,
       totalCases,
-      onStatus: Status,
-      onStarting: PythonStarting,
+      onStatus: setStatus,
+      onStarting: pythonStarting,
     });
     yourCode.running = runner;
     const start = performance.now();
@@ -204,19 +205,19 @@
         file: yourCode.file,
         only: only === null ? null : { function: only },
       });
-      ShowReport(lines);
-      yourCode.marks.ShowChecked(records, language);
+      showReport(lines);
+      yourCode.marks.showChecked(records, language);
       $("code-report").dataset.failed = failed ? "yes" : "no";
       const checked = (Date.now() - runner.started) / 1000;
       if (runner.ended && yourCode.running !== runner) {
-        Status(`Stopped after ${checked.toFixed(1)} s: the cases not run are not checked.`);
+        setStatus(`Stopped after ${checked.toFixed(1)} s: the cases not run are not checked.`);
         return;
       }
       if (only === null) {
         yourCode.lastCheck = { code: runner.code, failed };
-        KeepProgress(records, language);
+        keepProgress(records, language);
       }
-      Status(
+      setStatus(
         `${failed ? "Something to fix" : "Every case passed"}: checked in ${checked.toFixed(2)} s` +
           (language === "python"
             ? ` (${((performance.now() - start) / 1000).toFixed(1)} s with starting Python)`
@@ -227,19 +228,19 @@
         error instanceof CGFS_CHECK.CheckError
           ? error.message
           : `The check could not run: ${error.message ?? error}`;
-      yourCode.marks.ShowError($("code-report").textContent, yourCode.file);
+      yourCode.marks.showError($("code-report").textContent, yourCode.file);
       $("code-report").dataset.failed = "yes";
-      Status(yourCode.running ? "Your code could not be checked." : "Stopped.");
+      setStatus(yourCode.running ? "Your code could not be checked." : "Stopped.");
     } finally {
-      runner.End();
+      runner.end();
       yourCode.running = null;
       $("code-report").dataset.done = "yes";
-      Busy(null);
+      setBusy(null);
     }
   }
 
   // The parameters, and their kinds, of every function a figure's recipe may call.
-  function Kinds() {
+  function parameterKinds() {
     const kinds = {};
     for (const section of CGFS_CHECK.sections(yourCode.chapter, yourCode.files)) {
       for (const entry of section.entries) kinds[entry.function] ??= entry.parameters;
@@ -247,14 +248,14 @@
     return kinds;
   }
 
-  async function Figures() {
+  async function ourFigures() {
     if (!yourCode.figures) {
       const live = $("live");
       yourCode.figures = new FiguresWorker(
         live.dataset.module,
         CGFS_FIGURES_OF[live.dataset.chapter],
       );
-      const described = await yourCode.figures.Request({ op: "describe" });
+      const described = await yourCode.figures.request({ op: "describe" });
       yourCode.figureIndex = Object.fromEntries(
         described.figures.map((figure, i) => [figure.name, i]),
       );
@@ -264,7 +265,7 @@
 
   // What a draw's verdict and the last check of the same code say together, when they
   // seem to disagree: a sentence, or ''.
-  function Teaching(passed) {
+  function teaching(passed) {
     const checked = yourCode.lastCheck;
     if (!checked || checked.code !== yourCode.editor.getValue()) {
       return passed
@@ -289,24 +290,24 @@
 
   // A ray-traced figure drawn in Python, at a quarter of its resolution, while the full
   // one is drawn.
-  function ShowPreview(pixels, width, height) {
-    ComparisonView.PutOn($("code-preview"), pixels, width, height);
+  function showPreview(pixels, width, height) {
+    ComparisonView.putOn($("code-preview"), pixels, width, height);
     $("code-preview").hidden = false;
   }
 
   // The reader's picture of a figure chosen with the chapter's controls, beside ours in
-  // the figure column (chapter.js's Controls), when "draw it with my code too" is ticked.
-  function Beside(name, text, pixels = null, width = 0, height = 0) {
+  // the figure column (chapter.js's setUpControls), when "draw it with my code too" is ticked.
+  function beside(name, text, pixels = null, width = 0, height = 0) {
     const box = $("controls-yours");
     if (!box || !$("controls-mine").checked || $("code-figure").value !== name) return;
     box.hidden = false;
     box.querySelector("canvas").hidden = pixels === null;
-    if (pixels) ComparisonView.PutOn(box.querySelector("canvas"), pixels, width, height);
+    if (pixels) ComparisonView.putOn(box.querySelector("canvas"), pixels, width, height);
     box.querySelector("p").textContent = `${name}, ${text}`;
     box.dataset.figure = name;
   }
 
-  function DrawBeside(name) {
+  function drawBeside(name) {
     if (!$("controls-mine")?.checked || $("code-panel").dataset.busy) return;
     if (!(name in yourCode.drawings)) {
       // a figure the cases' functions alone do not draw
@@ -321,53 +322,53 @@
     $("code-figure").value = name;
     $("controls-yours").hidden = false;
     $("controls-yours").querySelector("p").textContent = `${name}: drawing yours…`;
-    Draw();
+    draw();
   }
 
   // Draw: the chosen figure with the reader's functions, beside ours and their difference,
   // and what cgfs-compare says of it.
-  async function Draw() {
+  async function draw() {
     const name = $("code-figure").value;
     const recipe = yourCode.drawings[name];
     const { width, height } = recipe.given.canvas;
-    Save();
-    Busy("draw");
+    save();
+    setBusy("draw");
     $("code-drawing").hidden = true;
     $("code-comparison").textContent = "";
     delete $("code-drawing").dataset.verdict;
     const start = performance.now();
-    const drawn = await DrawWithCode({
+    const drawn = await drawWithCode({
       language: yourCode.language,
       code: yourCode.editor.getValue(),
       file: yourCode.file,
-      functions: Object.keys(Kinds()),
+      functions: Object.keys(parameterKinds()),
       names: CGFS_CHECK.NAMES,
       recipe,
-      kinds: Kinds(),
+      kinds: parameterKinds(),
       seconds: kDrawLimit,
-      onStatus: Status,
-      onStarting: PythonStarting,
-      onPreview: (pixels) => ShowPreview(pixels, width, height),
+      onStatus: setStatus,
+      onStarting: pythonStarting,
+      onPreview: (pixels) => showPreview(pixels, width, height),
       onProgress: (fraction) =>
-        Status(`drawing ${name} with your functions… ${Math.round(fraction * 100)} %`),
+        setStatus(`drawing ${name} with your functions… ${Math.round(fraction * 100)} %`),
     });
     $("code-preview").hidden = true;
     try {
       if (drawn.cancelled) {
-        Status("Stopped.");
+        setStatus("Stopped.");
         return;
       }
       if (drawn.problem) {
-        Status(`${name} could not be drawn with your functions: ${drawn.problem}`);
-        Beside(name, `yours could not be drawn: ${drawn.problem}`);
+        setStatus(`${name} could not be drawn with your functions: ${drawn.problem}`);
+        beside(name, `yours could not be drawn: ${drawn.problem}`);
         return;
       }
       const seconds = (performance.now() - start) / 1000;
-      Status(`comparing with ours…`);
-      const figures = await Figures();
+      setStatus(`comparing with ours…`);
+      const figures = await ourFigures();
       const index = yourCode.figureIndex[name];
-      const ours = await figures.Request({ op: "draw", index, width, height, full: true });
-      const compared = await figures.Request({
+      const ours = await figures.request({ op: "draw", index, width, height, full: true });
+      const compared = await figures.request({
         op: "compare",
         index,
         width,
@@ -375,10 +376,10 @@
         rgba: drawn.pixels,
       });
       if (ours.problem || compared.problem) {
-        Status(`${name} could not be compared: ${ours.problem ?? compared.problem}`);
+        setStatus(`${name} could not be compared: ${ours.problem ?? compared.problem}`);
         return;
       }
-      yourCode.comparison.Show({
+      yourCode.comparison.show({
         ours: ours.pixels,
         yours: drawn.pixels,
         difference: compared.difference,
@@ -387,7 +388,7 @@
         first: { column: compared.column, row: compared.row },
         colours: compared.colours,
       });
-      $("code-teach").textContent = Teaching(compared.passed);
+      $("code-teach").textContent = teaching(compared.passed);
       const notes = compared.passed ? [] : (drawn.notes ?? []);
       $("code-comparison").textContent =
         `${name}, drawn with your functions, compared with ours:\n${compared.text}` +
@@ -395,29 +396,29 @@
       $("code-drawing").dataset.verdict = compared.passed ? "pass" : "fail";
       $("code-drawing").hidden = false;
       $("code-drawing").drawn = drawn; // the reader's picture, as drawn (the site's test reads it)
-      Beside(
+      beside(
         name,
         `yours: ${compared.passed ? "the same as ours" : "not the same as ours (the Your code tab shows how)"}`,
         drawn.pixels,
         width,
         height,
       );
-      Status(
+      setStatus(
         `${name} drawn with your functions in ${seconds.toFixed(1)} s: ${compared.passed ? "the same as ours" : "not the same as ours"}`,
       );
     } finally {
-      Busy(null);
+      setBusy(null);
     }
   }
 
-  function CheckAtCursor() {
-    const name = FunctionAtCursor();
-    if (name) Check(name);
+  function checkAtCursor() {
+    const name = functionAtCursor();
+    if (name) runCheck(name);
   }
 
   // The chapter's functions and their verdicts in the last full check, for the index:
   // { language, passed: [names], failed: [names], unwritten: [names] }.
-  function KeepProgress(records, language) {
+  function keepProgress(records, language) {
     const own = new Set(yourCode.files[yourCode.chapter].functions.map((entry) => entry.function));
     const rank = ["passed", "unwritten", "failed"]; // a function's verdict: its cases' worst
     const verdicts = new Map();
@@ -430,8 +431,8 @@
     }
     const named = (verdict) =>
       [...verdicts].filter(([, each]) => each === verdict).map(([name]) => name);
-    Store(
-      ProgressKey(yourCode.chapter),
+    store(
+      progressKey(yourCode.chapter),
       JSON.stringify({
         language,
         passed: named("passed"),
@@ -441,7 +442,7 @@
     );
   }
 
-  const Base64Url = (bytes) => {
+  const base64Url = (bytes) => {
     let text = "";
     for (let i = 0; i < bytes.length; i += 8192)
       text += String.fromCharCode(...bytes.subarray(i, i + 8192));
@@ -450,8 +451,8 @@
 
   // A link to this page with the code in its fragment (after the #, which a browser sends
   // to no server): deflated, in base64url.
-  async function MakeLink() {
-    Save();
+  async function makeLink() {
+    save();
     const deflated = new Response(
       new Blob([yourCode.editor.getValue()])
         .stream()
@@ -459,7 +460,7 @@
     );
     const link =
       `${location.href.replace(/#.*$/, "")}#code=${yourCode.language}:` +
-      Base64Url(new Uint8Array(await deflated.arrayBuffer()));
+      base64Url(new Uint8Array(await deflated.arrayBuffer()));
     $("code-link").value = link;
     $("code-link").hidden = false;
     $("code-link").select();
@@ -470,14 +471,14 @@
     } catch {
       // no clipboard here (a page opened from a file, or refused): the link is shown to copy
     }
-    Status(
+    setStatus(
       `A link with your code (${link.length} characters)${copied ? ", copied" : ""}: it opens this page with ` +
         "your code in the editor. Nothing is sent anywhere: the code is in the link itself.",
     );
   }
 
   // The code a link brought, inflated, at most kMostCode bytes; or throws why not.
-  async function LinkedCode(text) {
+  async function linkedCode(text) {
     const bytes = Uint8Array.from(atob(text.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
       c.charCodeAt(0),
     );
@@ -501,30 +502,30 @@
 
   // Opened from a link with code: that code in the editor, over the reader's own (one
   // Ctrl+Z brings theirs back).
-  async function OpenLinked() {
+  async function openLinked() {
     const [, language, text] = kLinked;
     let code;
     try {
-      code = await LinkedCode(text);
+      code = await linkedCode(text);
     } catch (error) {
-      Status(
+      setStatus(
         `This link's code could not be read (${error.message ?? error}): the editor has your own.`,
       );
       return;
     }
-    if (language !== yourCode.language) ShowCode(language, OpeningCode(language));
+    if (language !== yourCode.language) showCode(language, openingCode(language));
     yourCode.editor.setValue(code);
-    Status("The code of the link you opened is in the editor; Ctrl+Z brings back what you had.");
+    setStatus("The code of the link you opened is in the editor; Ctrl+Z brings back what you had.");
   }
 
-  function Stop() {
-    yourCode.running?.End();
+  function stopRun() {
+    yourCode.running?.end();
     yourCode.running = null;
-    DrawWithCode.Cancel();
+    drawWithCode.Cancel();
   }
 
-  function Download() {
-    Save();
+  function downloadCode() {
+    save();
     const link = document.createElement("a");
     link.href = URL.createObjectURL(new Blob([yourCode.editor.getValue()], { type: "text/plain" }));
     link.download = yourCode.file;
@@ -532,28 +533,28 @@
     setTimeout(() => URL.revokeObjectURL(link.href), 1000);
   }
 
-  async function Open(file) {
+  async function openFile(file) {
     const language = /\.py$/i.test(file.name)
       ? "python"
       : /\.(m|c)?js$/i.test(file.name)
         ? "javascript"
         : null;
     if (!language) {
-      Status(`${file.name}: open a Python file (.py) or JavaScript (.js, .mjs, .cjs)`);
+      setStatus(`${file.name}: open a Python file (.py) or JavaScript (.js, .mjs, .cjs)`);
       return;
     }
     if (file.size > kMostCode) {
-      Status(`${file.name}: larger than 1 MB, not a chapter`);
+      setStatus(`${file.name}: larger than 1 MB, not a chapter`);
       return;
     }
-    Save();
-    ShowCode(language, await file.text(), file.name);
-    Store(`${StorageKey(yourCode.chapter, language)}:file`, file.name);
-    Save();
-    Status(`opened ${file.name}`);
+    save();
+    showCode(language, await file.text(), file.name);
+    store(`${storageKey(yourCode.chapter, language)}:file`, file.name);
+    save();
+    setStatus(`opened ${file.name}`);
   }
 
-  function StartOver() {
+  function startOver() {
     const { chapter, language } = yourCode;
     if (
       !confirm(
@@ -562,34 +563,34 @@
       )
     )
       return;
-    Store(StorageKey(chapter, language), null);
-    Store(`${StorageKey(chapter, language)}:file`, null);
-    ShowCode(language, OpeningCode(language));
-    Status("started again");
+    store(storageKey(chapter, language), null);
+    store(`${storageKey(chapter, language)}:file`, null);
+    showCode(language, openingCode(language));
+    setStatus("started again");
   }
 
-  function ChooseLanguage(language) {
-    Save();
-    Store("cgfs-code:language", language);
-    ShowCode(language, OpeningCode(language));
-    Status("");
-    WarmPython();
+  function chooseLanguage(language) {
+    save();
+    store("cgfs-code:language", language);
+    showCode(language, openingCode(language));
+    setStatus("");
+    warmPython();
   }
 
   // Python started as soon as it is the language, while the reader reads and types.
-  function WarmPython() {
+  function warmPython() {
     if (yourCode.language !== "python") return;
-    SupplyFor("python").Warm(PythonStarting);
+    supplyFor("python").warm(pythonStarting);
   }
 
-  function ListDrawings() {
+  function listDrawings() {
     const names = Object.keys(yourCode.drawings);
     for (const name of names) $("code-figure").append(new Option(name, name));
     $("code-draw-group").hidden = names.length === 0;
     $("code-no-drawing").hidden = names.length > 0;
   }
 
-  function StartYourCode() {
+  function startYourCode() {
     yourCode.editor = CodeMirror.fromTextArea($("code-editor"), {
       lineNumbers: true,
       indentUnit: 2,
@@ -600,57 +601,57 @@
       extraKeys: {
         Tab: (editor) =>
           editor.execCommand(editor.somethingSelected() ? "indentMore" : "insertSoftTab"),
-        "Ctrl-Enter": () => Check(),
-        "Cmd-Enter": () => Check(),
-        "Shift-Ctrl-Enter": CheckAtCursor,
-        "Shift-Cmd-Enter": CheckAtCursor,
+        "Ctrl-Enter": () => runCheck(),
+        "Cmd-Enter": () => runCheck(),
+        "Shift-Ctrl-Enter": checkAtCursor,
+        "Shift-Cmd-Enter": checkAtCursor,
       },
     });
-    yourCode.marks = new EditorMarks(yourCode.editor, ShowInReport);
-    yourCode.editor.on("cursorActivity", ShowFunctionAtCursor);
+    yourCode.marks = new EditorMarks(yourCode.editor, showInReport);
+    yourCode.editor.on("cursorActivity", showFunctionAtCursor);
     let saving = null;
     let checking = null;
     yourCode.editor.on("change", () => {
       clearTimeout(saving);
-      saving = setTimeout(Save, 500);
+      saving = setTimeout(save, 500);
       // "check as I type" (JavaScript, whose worker starts at once): a check after a pause.
       clearTimeout(checking);
       if ($("code-auto").checked && yourCode.language === "javascript")
-        checking = setTimeout(() => Check(), kTypingPause);
+        checking = setTimeout(() => runCheck(), kTypingPause);
     });
-    const language = Stored("cgfs-code:language") === "python" ? "python" : "javascript";
-    ShowCode(language, OpeningCode(language));
-    ListDrawings();
-    $("code-language").addEventListener("change", (event) => ChooseLanguage(event.target.value));
-    $("code-check").addEventListener("click", () => Check());
-    $("code-check-one").addEventListener("click", CheckAtCursor);
-    ShowFunctionAtCursor();
-    $("code-draw").addEventListener("click", Draw);
-    $("code-stop").addEventListener("click", Stop);
-    $("code-download").addEventListener("click", Download);
-    $("code-link-button").addEventListener("click", MakeLink);
+    const language = readStored("cgfs-code:language") === "python" ? "python" : "javascript";
+    showCode(language, openingCode(language));
+    listDrawings();
+    $("code-language").addEventListener("change", (event) => chooseLanguage(event.target.value));
+    $("code-check").addEventListener("click", () => runCheck());
+    $("code-check-one").addEventListener("click", checkAtCursor);
+    showFunctionAtCursor();
+    $("code-draw").addEventListener("click", draw);
+    $("code-stop").addEventListener("click", stopRun);
+    $("code-download").addEventListener("click", downloadCode);
+    $("code-link-button").addEventListener("click", makeLink);
     $("code-open-button").addEventListener("click", () => $("code-open").click());
     $("code-open").addEventListener("change", (event) => {
-      if (event.target.files[0]) Open(event.target.files[0]);
+      if (event.target.files[0]) openFile(event.target.files[0]);
       event.target.value = "";
     });
-    $("code-start-over").addEventListener("click", StartOver);
-    document.addEventListener("cgfs-figure", ({ detail }) => DrawBeside(detail));
+    $("code-start-over").addEventListener("click", startOver);
+    document.addEventListener("cgfs-figure", ({ detail }) => drawBeside(detail));
     $("controls-mine")?.addEventListener("change", (event) => {
       if (!event.target.checked) $("controls-yours").hidden = true;
-      else DrawBeside(document.querySelector('#controls input[type="radio"]:checked')?.value);
+      else drawBeside(document.querySelector('#controls input[type="radio"]:checked')?.value);
     });
-    window.addEventListener("beforeunload", Save);
+    window.addEventListener("beforeunload", save);
     // CodeMirror measures itself when shown: the panel starts hidden behind its tab.
     document.addEventListener("cgfs-tab", ({ detail }) => {
       if (detail !== "tab-code") return;
       yourCode.editor.refresh();
-      WarmPython();
+      warmPython();
     });
     yourCode.comparison = new ComparisonView();
-    if ($("tab-code").getAttribute("aria-selected") === "true") WarmPython(); // (its tab chosen before this ran)
+    if ($("tab-code").getAttribute("aria-selected") === "true") warmPython(); // (its tab chosen before this ran)
     if (kLinked) {
-      OpenLinked().finally(() => {
+      openLinked().finally(() => {
         $("code-panel").dataset.ready = "yes";
       });
     } else {
@@ -658,5 +659,5 @@
     }
   }
 
-  StartYourCode();
+  startYourCode();
 })();
