@@ -178,7 +178,7 @@ TEST_CASE("the rays traced per pixel are the rays the book's rules spawn", "[cos
   for (const auto& view : views) {
     INFO(view.figure);
     const std::vector<cgfs::Count> rays =
-        TracedRays(view.scene(), view.depth, canvas, Optimizations{});
+        TracedRays(view.scene(), view.depth, canvas, AllOptimizations());
     Scene scene = view.scene();
     PrepareScene(scene, Optimizations{});
     cgfs::Count wrong = 0;
