@@ -1,11 +1,21 @@
 #include "shaded_triangles.h"
 
+#include <utility>
 #include <vector>
 
 // Listing 8-1. The same steps as DrawFilledTriangle, with h carried along. The
 // vertices move as a whole when sorted, so each keeps its own h.
 void DrawShadedTriangle(Point P0, Point P1, Point P2, const Color& color, Canvas& canvas) {
-  SortByY(P0, P1, P2);
+  // Sort the points so that y0 <= y1 <= y2.
+  if (P1.y < P0.y) {
+    std::swap(P1, P0);
+  }
+  if (P2.y < P0.y) {
+    std::swap(P2, P0);
+  }
+  if (P2.y < P1.y) {
+    std::swap(P2, P1);
+  }
 
   // Compute the x coordinates and h values of the triangle edges.
   std::vector<double> x01 = Interpolate(P0.y, P0.x, P1.y, P1.x);

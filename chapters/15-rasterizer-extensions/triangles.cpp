@@ -10,8 +10,10 @@ void DrawWireframeTriangle(Point P0, Point P1, Point P2, const Color& color, Can
   DrawLine(P2, P0, color, canvas);
 }
 
-// Listing 7-1: "Sort the points so that y0 <= y1 <= y2".
-void SortByY(Point& P0, Point& P1, Point& P2) {
+// Listing 7-1. For each y, x_left and x_right come from the edges: the long side
+// P0-P2 on one hand, the two short sides P0-P1 and P1-P2 joined on the other.
+void DrawFilledTriangle(Point P0, Point P1, Point P2, const Color& color, Canvas& canvas) {
+  // Sort the points so that y0 <= y1 <= y2.
   if (P1.y < P0.y) {
     std::swap(P1, P0);
   }
@@ -21,12 +23,6 @@ void SortByY(Point& P0, Point& P1, Point& P2) {
   if (P2.y < P1.y) {
     std::swap(P2, P1);
   }
-}
-
-// Listing 7-1. For each y, x_left and x_right come from the edges: the long side
-// P0-P2 on one hand, the two short sides P0-P1 and P1-P2 joined on the other.
-void DrawFilledTriangle(Point P0, Point P1, Point P2, const Color& color, Canvas& canvas) {
-  SortByY(P0, P1, P2);
 
   // Compute the x coordinates of the triangle edges, with y as the independent variable.
   std::vector<double> x01 = Interpolate(P0.y, P0.x, P1.y, P1.x);
