@@ -49,7 +49,7 @@ fi
 
 if ! command -v node >/dev/null; then
   echo "SKIPPED: no node to run the checker (CI installs nodejs: scripts/setup)"
-  [ $failed -eq 0 ] && echo "PASS: the case files are read by C++ tests"
+  [ $failed -ne 0 ] || [ "$part" = references ] || echo "PASS: the case files are read by C++ tests"
   exit $failed
 fi
 if [ "$part" != references ]; then
