@@ -157,8 +157,8 @@ function(cgfs_add_chapter chapter)
     cgfs_reuse_chapter_headers(${chapter}-lib)
   elseif(CGFS_PRECOMPILED_HEADERS)
     # scripts/mistakes, on copies of our chapters, which include what they use: each
-    # file still its own unit, the headers precompiled (a mistake's file compiles in a
-    # third of the time).
+    # file still its own unit, the headers precompiled (chapter 15's files compile in
+    # 12 s instead of 22).
     cgfs_reuse_chapter_headers(${chapter}-lib)
   endif()
 
