@@ -369,7 +369,7 @@ class ProcessRunner {
     }
     // The process's account of the file, held against what the file says of itself.
     const defined = await definedFunctions(this.options.module, this.language, {
-      python: sandbox.pythonInterpreter()?.executable,
+      python: this.language === "python" ? sandbox.pythonInterpreter()?.executable : "",
       nodePath: this.language === "python" ? "" : nodePath(),
     });
     return heldAgainstFile(facts, defined, functions);
