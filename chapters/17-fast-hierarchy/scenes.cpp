@@ -319,13 +319,15 @@ std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> TestsCounted(
   };
 }
 
-// What a main loop counts of `counter` per pixel while it draws; the picture it draws
-// is not kept.
-std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> CountedWhileDrawing(
-    const cgfs::Counter& counter, std::function<void(const Scene&, Canvas&)> render) {
-  return [&counter, render](const Scene& scene, Canvas& canvas) {
+// The camera rays a main loop (RenderSceneSubsampled, RenderSceneAdaptive) traces per
+// pixel while it draws; the picture it draws is not kept.
+template <typename MainLoop>
+std::function<std::vector<cgfs::Count>(const Scene&, Canvas&)> CameraRaysCounted(
+    MainLoop main_loop, int recursion_depth, Optimizations optimizations) {
+  return [main_loop, recursion_depth, optimizations](const Scene& scene, Canvas& canvas) {
     Canvas drawn(canvas.Width(), canvas.Height());
-    return CountedPerPixel(counter, canvas, [&] { render(scene, drawn); });
+    return CountedPerPixel(kCameraRays, canvas,
+                           [&] { main_loop(scene, recursion_depth, drawn, optimizations); });
   };
 }
 
@@ -358,12 +360,7 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
                  TestsCounted(loop), 10001),
       CostFigure("subsampling-thin-wires-searches",
                  "the pixels whose camera ray subsampling searched through the scene (white)",
-                 SceneThinWires,
-                 CountedWhileDrawing(kCameraRays,
-                                     [optimizations](const Scene& scene, Canvas& drawn) {
-                                       RenderSceneSubsampled(scene, 0, drawn, optimizations);
-                                     }),
-                 1),
+                 SceneThinWires, CameraRaysCounted(RenderSceneSubsampled, 0, optimizations), 1),
       CostFigure("transparency-rays",
                  "rays traced per pixel, the camera's and those reflected and sent through",
                  SceneTransparency, TracedCounted(3, optimizations), kRaysScale),
@@ -373,12 +370,7 @@ std::vector<cgfs::Figure> CostFigures(const Optimizations& optimizations) {
                  SceneMagnifyingGlass, TracedCounted(5, optimizations), kRaysScale),
       CostFigure("supersampling-adaptive-rays",
                  "camera rays per pixel of adaptive supersampling, 1 (dark) or 17 (white)",
-                 SceneCamera,
-                 CountedWhileDrawing(kCameraRays,
-                                     [optimizations](const Scene& scene, Canvas& drawn) {
-                                       RenderSceneAdaptive(scene, 3, drawn, optimizations);
-                                     }),
-                 17),
+                 SceneCamera, CameraRaysCounted(RenderSceneAdaptive, 3, optimizations), 17),
   };
 }
 
