@@ -9,8 +9,8 @@
 # student's code does because of the checker's arguments writes a file; bad input is one
 # line. Every function of every case file is read by a C++ test, and the case files'
 # contracts between chapters hold. Skipped without node (CI installs it: scripts/setup);
-# the Python parts without python3. PART: `references` runs our references alone,
-# `behaviour` the rest (the test command runs the two side by side); without it, both.
+# the Python parts without python3. PART: `references` runs our references alone (the
+# deep checks' mistakes part), `behaviour` the rest (the test command); without it, both.
 # Usage: check_checkers.sh SOURCE_DIR WORK_DIR [references|behaviour]
 set -euo pipefail
 source_dir=$1 work=$2 part=${3:-both}
