@@ -67,7 +67,7 @@ TEST_CASE("every exact optimisation draws every figure byte for byte as none doe
     // on them below ("Bvh: grazing rays ...").
     const bool big = figure.name == "sphere-field-10000" || figure.name == "sphere-field-100000" ||
                      figure.name == "torus-mesh";
-    const int side = big ? 20 : 64;
+    const int side = big ? 12 : 64;
     const cgfs::Image plain = Draw(figure.name, side, {});
     for (const auto& [name, optimizations] : switches) {
       if (big && name != "bvh" && name != "all") {
