@@ -183,6 +183,13 @@ if [ $have_python -eq 1 ]; then
   echo "== Python: a chapter written with dicts and the book's globals passes as it is"
   run 02 "$students/dict_style.py"
   check "exit status 0" test $status -eq 0
+  if [ -x /usr/bin/python3 ]; then
+    echo "== Python: the python3 on PATH a link to the system's, from a folder of the user's (~/bin)"
+    mkdir -p "$work/user-bin"
+    ln -sf /usr/bin/python3 "$work/user-bin/python3"
+    PATH=$work/user-bin:$PATH run 02 "$students/dict_style.py"
+    check "exit status 0: the link is there in the sandbox too" test $status -eq 0
+  fi
 fi
 
 echo "== JavaScript in the demos' style: a plain script and a page"

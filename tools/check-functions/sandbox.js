@@ -446,8 +446,10 @@ function located(program) {
 // The command enters the sandbox's cgroup (a shell's `echo $$`) before anything else runs.
 // `cut`: the search for copies of the case files stopped at its bound.
 function sandboxed(command, { language, folders, seconds, modulePaths = [] }) {
+  // A file outside the system's folders, or reached through a link from outside them (a
+  // python3 in ~/bin that links to /usr/bin/python3): bound at its own path.
   const own = [...new Set(interpreterFiles(language, modulePaths))].filter(
-    (file) => real(file) && !system(real(file)),
+    (file) => real(file) && !(system(file) && system(real(file))),
   );
   const bound = [...new Set([...folders, ...own.map(real)])];
   const hiding = hidingMounts(
