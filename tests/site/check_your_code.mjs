@@ -94,7 +94,10 @@ async function type(code) {
 }
 
 // Opens a file into the editor through the page's own file input, as a reader's Open does.
+// Done when the page says so: the editor may hold that file already (kept from an earlier
+// visit), and a value typed before the page has read the file would be overwritten by it.
 async function openFile(path) {
+  await browser.evaluate(`document.getElementById("code-status").textContent = ""`);
   const { root } = await browser.send("DOM.getDocument", { depth: 0 });
   const { nodeId } = await browser.send("DOM.querySelector", {
     nodeId: root.nodeId,
@@ -102,7 +105,8 @@ async function openFile(path) {
   });
   await browser.send("DOM.setFileInputFiles", { nodeId, files: [path] });
   await browser.waitFor(
-    `${$("code-file", "textContent")} === ${JSON.stringify(basename(path))} && ` +
+    `${$("code-status", "textContent")} === ${JSON.stringify(`opened ${basename(path)}`)} && ` +
+      `${$("code-file", "textContent")} === ${JSON.stringify(basename(path))} && ` +
       `document.querySelector('#code-panel .CodeMirror').CodeMirror.getValue() === ${JSON.stringify(readFileSync(path, "utf8"))}`,
     `${path} opened`,
     10,
