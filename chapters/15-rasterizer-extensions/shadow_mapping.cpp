@@ -155,18 +155,6 @@ void LightVisibilities(const Vec3& P, const Vec3& N,
 
 namespace {
 
-// The depths a DepthBuffer holds, row by row from the top.
-std::vector<double> DepthsOf(const DepthBuffer& depth_buffer, int size) {
-  std::vector<double> depths;
-  depths.reserve(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
-  for (int y = size / 2 - 1; y >= -size / 2; --y) {
-    for (int x = -size / 2; x < size / 2; ++x) {
-      depths.push_back(depth_buffer.At(x, y));
-    }
-  }
-  return depths;
-}
-
 // The orientation (columns right, up, forward) of a view looking along `forward`.
 glm::dmat4 LookAlong(const Vec3& forward) {
   const Vec3 f = glm::normalize(forward);
@@ -183,48 +171,64 @@ struct DepthOnlyFrame final : Frame {
   void Write(int /*x*/, int /*y*/, const Color& /*color*/) override {}
 };
 
-// A point light's view: a cube map's face seen from the light, flat, its back faces
-// drawn, into a frame that keeps only the depths.
-DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face, int size) {
+// A map's view is the scene drawn from elsewhere: `seen` (its camera at the light) by
+// RenderView, flat, its back faces drawn, into a size x size frame that keeps only the
+// depths; the 1/z of each entry, row by row from the top (0: nothing there).
+std::vector<double> DrawDepths(const Scene& seen, const std::vector<Plane>& planes, int size) {
   Canvas canvas(size, size);
   DepthBuffer depth_buffer(canvas, DepthValue::kInverseZ);
-  const Viewport viewport = CubeFaceViewport(scene);
-  DepthOnlyFrame frame(canvas, depth_buffer, viewport);
+  DepthOnlyFrame frame(canvas, depth_buffer, seen.viewport);
   Shading flat;
   flat.model = ShadingModel::kFlat;
   PhongSteps none;
-  const Scene seen = CubeFaceView(scene, position, face, viewport);
-  const std::vector<Plane> planes = CubeFaceClippingPlanes(viewport.distance, size);
-  const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
   RenderView(seen, planes, flat, {}, frame, none, BackFaces::kDrawn);
-  return {size, DepthsOf(depth_buffer, size), world_to_view, false, 1};
+  std::vector<double> depths;
+  depths.reserve(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
+  for (int y = size / 2 - 1; y >= -size / 2; --y) {
+    for (int x = -size / 2; x < size / 2; ++x) {
+      depths.push_back(depth_buffer.At(x, y));
+    }
+  }
+  return depths;
 }
 
-// A directional light's view: orthographic, so a point (x, y, z) of the view's
-// space lands at (x, y) scaled to the canvas, whatever its z; z is linear across the
-// canvas then, and the depth buffer stores z itself. The view stands beyond the
-// scene, so nothing needs clipping. RenderView projects in perspective (ProjectVertex),
-// so this view draws its triangles itself, with chapter 12's DrawFilledTriangle.
+// A point light's view: a cube map's face seen from the light.
+DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face, int size) {
+  const Viewport viewport = CubeFaceViewport(scene);
+  const Scene seen = CubeFaceView(scene, position, face, viewport);
+  const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
+  return {size, DrawDepths(seen, CubeFaceClippingPlanes(viewport.distance, size), size),
+          world_to_view, false, 1};
+}
+
+// A directional light's view: orthographic, a point (x, y, z) of the view at (x, y),
+// its depth z linear across the canvas. RenderView draws it as the perspective view
+// (d = 1) of the scene moved to (x, y, 1) / w, w = far - z: x d / z gives x back, and
+// 1/z, what the depth buffer keeps, is w. The move is projective (the appendix's
+// homogeneous (x, y, 1, w)), so triangles stay triangles; w >= 1: nothing to clip.
 DepthMap OrthographicView(const Scene& scene, const Vec3& direction, int size) {
   const BoundingSphere bounds = SceneBounds(scene);
   const Vec3 forward = -glm::normalize(direction);
   const glm::dmat4 world_to_view =
       MakeCameraMatrix(bounds.center - forward * (bounds.radius + 1), LookAlong(forward));
-  Canvas canvas(size, size);
-  const Viewport viewport{2 * bounds.radius, 2 * bounds.radius, 1};
-  DepthBuffer depth_buffer(canvas, DepthValue::kZ);
+  const double far = 2 * bounds.radius + 2;  // the scene lies within 1 <= z <= far - 1
+  std::vector<Model> moved;
   for (const CameraSpaceInstance& I : SceneInView(scene, world_to_view).instances) {
-    const std::vector<Vec3>& V = I.model.vertices;
-    std::vector<Point> projected;
-    for (const Vec3& vertex : V) {
-      projected.push_back(ViewportToCanvas(vertex.x, vertex.y, canvas, viewport));
-    }
-    for (const Triangle& T : I.model.triangles) {
-      DrawFilledTriangle(projected[T.v[0]], projected[T.v[1]], projected[T.v[2]], V[T.v[0]].z,
-                         V[T.v[1]].z, V[T.v[2]].z, cgfs::kBlack, canvas, depth_buffer);
+    moved.push_back(I.model);
+    for (Vec3& vertex : moved.back().vertices) {
+      vertex = Vec3(vertex.x, vertex.y, 1) / (far - vertex.z);
     }
   }
-  return {size, DepthsOf(depth_buffer, size), world_to_view, true, bounds.radius};
+  Scene seen;
+  seen.viewport = {2 * bounds.radius, 2 * bounds.radius, 1};
+  for (const Model& model : moved) {
+    seen.instances.push_back({&model, {}});
+  }
+  std::vector<double> depths = DrawDepths(seen, {}, size);
+  for (double& depth : depths) {
+    depth = depth > 0 ? far - depth : cgfs::kInf;  // w back to z; 0: nothing there
+  }
+  return {size, std::move(depths), world_to_view, true, bounds.radius};
 }
 
 }  // namespace
