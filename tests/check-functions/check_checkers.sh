@@ -283,6 +283,25 @@ EOF
 run 03 "$work/lights.js"
 check "light.position || light.direction tells them apart: every ComputeLighting case passes" says "^  ComputeLighting +passed \(7 cases\)"
 
+echo "== a scene of the reader's own, with a field the checker's scene does not have"
+sed 's/background_color/background/g' "$reference/js/basic-rays.js" >"$work/own_scene.js"
+run 02 "$work/own_scene.js"
+check "JavaScript: the field read from the checker's scene is said first, as Python's AttributeError is" \
+  says "^    TraceRay reads \`scene.background\`, which the checker's scene does not have"
+check "and the cases are its consequences" \
+  says "^    case 8 of 02-basic-rays.json \(a consequence of the line above\): returned null, not a colour"
+cat >"$work/own_scene_adapter.js" <<'EOF'
+module.exports = {
+  setup(module, given, adapter) {
+    if (given.scene) module.scene.background = adapter.color(given.scene.background_color, adapter);
+  },
+};
+EOF
+run 02 "$work/own_scene.js" --adapter "$work/own_scene_adapter.js"
+check "with the adapter the note asks for, the chapter passes" says "^chapter: complete"
+run 02 "$reference/js/basic-rays.js"
+check "a chapter that reads only the book's fields gets no such note" lacks "reads \`scene\."
+
 echo "== a chapter's own types, a page's script saved as .js, an ES module, a file written at load"
 styles=$work/styles
 mkdir -p "$styles"

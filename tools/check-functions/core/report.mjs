@@ -162,8 +162,14 @@ function typeMismatch(answer, signature, language) {
     return found ? `.${found[2]}` : null;
   }
   const found = /^TypeError: ([A-Za-z_$][\w$]*)((?:\.[\w$]+)+) is not a function/.exec(raised);
-  return found && signature.parameters.some(([name]) => name === found[1])
-    ? `${found[1]}${found[2]}`
+  if (found && signature.parameters.some(([name]) => name === found[1]))
+    return `${found[1]}${found[2]}`;
+  // A field of its own read from the checker's scene, where it got undefined: the case
+  // raised, or came back with nothing or not a number.
+  const nothing = (value) =>
+    value === null || value === "nan" || (Array.isArray(value) && value.some(nothing));
+  return answer.absent?.length > 0 && (raised !== "" || nothing(answer.returned))
+    ? `scene.${answer.absent[0]}`
     : null;
 }
 
@@ -175,6 +181,13 @@ function typeNote(name, called, { language, chapter, file }) {
         "(numpy arrays where your module uses numpy, your Sphere where it has one)"
       : "vectors as arrays [x, y, z] (or your Vec, Vec3, Vector, Vector3 or Vertex, made with (x, y, z)), colours as " +
         "arrays (or your Color), spheres, lights and scenes as objects with the book's fields (or your Sphere)";
+  const template = `\`--adapter-template ${chapter.slice(0, 2)} ${file}\` prints one to fill in`;
+  if (called.startsWith("scene."))
+    return (
+      `${name} reads \`${called}\`, which the checker's scene does not have: it gives the book's fields ` +
+      `(spheres, lights, background_color). Give an adapter whose setup(module, given, adapter) sets your ` +
+      `own, as module.${called} = ... from given.scene (${template})`
+    );
   return (
     `${name} calls \`${called}\`, which what the checker gives it does not have: it gives ${shapes}. Give an ` +
     `adapter whose vector(value), color(value) or sphere(value) makes your own types (\`--adapter-template ${chapter.slice(0, 2)} ${file}\` ` +

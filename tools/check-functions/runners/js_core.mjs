@@ -471,6 +471,21 @@ function named(array, names) {
   return array;
 }
 
+// The fields a case's code read from the checker's scene that it does not have (a
+// scene of the student's own, `scene.background`): JavaScript gives undefined where
+// Python raises, so a failing case names them as Python's AttributeError does. Reset
+// for each case.
+const absentReads = new Set();
+const NOT_FIELDS = new Set(["then", "toJSON", "constructor", "toString", "valueOf"]);
+function watched(record) {
+  return new Proxy(record, {
+    get(target, key, receiver) {
+      if (typeof key === "string" && !(key in target) && !NOT_FIELDS.has(key)) absentReads.add(key);
+      return Reflect.get(target, key, receiver);
+    },
+  });
+}
+
 // How the book's data reach the chapter, unless its adapter says otherwise: vectors and
 // colours as arrays (or the chapter's Vec and Color), spheres, lights and scenes as plain
 // objects with the book's fields (or the demos', for a chapter in their style).
@@ -551,11 +566,12 @@ export function defaultAdapter(made) {
     },
     spheres: (value, adapter) => value.map((each) => adapter.sphere(each, adapter)),
     lights: (value, adapter) => value.map((each) => adapter.light(each, adapter)),
-    scene: (value, adapter) => ({
-      spheres: adapter.spheres(value.spheres ?? [], adapter),
-      lights: adapter.lights(value.lights ?? [], adapter),
-      background_color: adapter.color(value.background_color ?? [255, 255, 255], adapter),
-    }),
+    scene: (value, adapter) =>
+      watched({
+        spheres: adapter.spheres(value.spheres ?? [], adapter),
+        lights: adapter.lights(value.lights ?? [], adapter),
+        background_color: adapter.color(value.background_color ?? [255, 255, 255], adapter),
+      }),
     camera: (value, adapter) => ({
       position: adapter.vector(value.position, adapter),
       rotation: adapter.rows(value.rotation, adapter),
@@ -673,6 +689,7 @@ export function plain(value, budget, depth = 0) {
 // { raised } / { adapter_failed }.
 export function runCase(request, chapter, adapter, names, readNames, functionReads, ours = []) {
   const given = decoded(request.given ?? {});
+  absentReads.clear();
   let pixels = null;
   if (request.drawing) {
     pixels = [];
@@ -700,13 +717,14 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
   const fn = chapter.value(request.function);
   let value,
     args = [];
+  const absent = () => (absentReads.size > 0 ? { absent: [...absentReads].slice(0, 5) } : {});
   try {
     for (args of calls) value = fn(...args);
   } catch (error) {
     if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
-    return { raised: oneLine(error, ours), placed };
+    return { raised: oneLine(error, ours), placed, ...absent() };
   }
-  const answer = { placed, returned: value };
+  const answer = { placed, returned: value, ...absent() };
   if (pixels) answer.pixels = pixels;
   if (adapter.result) {
     try {
