@@ -474,10 +474,13 @@ function named(array, names) {
 // The fields a case's code read from the checker's scene that it does not have (a
 // scene of the student's own, `scene.background`): JavaScript gives undefined where
 // Python raises, so a failing case names them as Python's AttributeError does. Reset
-// for each case.
+// for each case; not watched while a figure is drawn (a read through the watch takes
+// some 45 ns, and a figure's rays make millions).
 const absentReads = new Set();
+let watching = false;
 const NOT_FIELDS = new Set(["then", "toJSON", "constructor", "toString", "valueOf"]);
 function watched(record) {
+  if (!watching) return record;
   return new Proxy(record, {
     get(target, key, receiver) {
       if (typeof key === "string" && !(key in target) && !NOT_FIELDS.has(key)) absentReads.add(key);
@@ -689,7 +692,6 @@ export function plain(value, budget, depth = 0) {
 // { raised } / { adapter_failed }.
 export function runCase(request, chapter, adapter, names, readNames, functionReads, ours = []) {
   const given = decoded(request.given ?? {});
-  absentReads.clear();
   let pixels = null;
   if (request.drawing) {
     pixels = [];
@@ -701,6 +703,7 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
   }
   let placed, calls;
   try {
+    watching = true; // the scene this case's values make is watched
     placed = place(chapter, names, given, adapter, readNames);
     if (adapter.setup)
       placed.push(...setUpByAdapter(chapter, adapter, given, functionReads(request.function)));
@@ -713,11 +716,14 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
   } catch (error) {
     if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
     return { adapter_failed: oneLine(error, ours) };
+  } finally {
+    watching = false;
   }
   const fn = chapter.value(request.function);
   let value,
     args = [];
   const absent = () => (absentReads.size > 0 ? { absent: [...absentReads].slice(0, 5) } : {});
+  absentReads.clear(); // what the function reads, not the adapter's setup
   try {
     for (args of calls) value = fn(...args);
   } catch (error) {
