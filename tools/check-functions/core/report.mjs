@@ -175,12 +175,6 @@ function typeMismatch(answer, signature, language) {
 
 // The line that says the checker's values are not the function's own types.
 function typeNote(name, called, { language, chapter, file }) {
-  const shapes =
-    language === "python"
-      ? "vectors as named tuples (x, y, z), colours as tuples, spheres, lights and scenes as records of the book's fields " +
-        "(numpy arrays where your module uses numpy, your Sphere where it has one)"
-      : "vectors as arrays [x, y, z] (or your Vec, Vec3, Vector, Vector3 or Vertex, made with (x, y, z)), colours as " +
-        "arrays (or your Color), spheres, lights and scenes as objects with the book's fields (or your Sphere)";
   const template = `\`--adapter-template ${chapter.slice(0, 2)} ${file}\` prints one to fill in`;
   if (called.startsWith("scene."))
     return (
@@ -188,10 +182,15 @@ function typeNote(name, called, { language, chapter, file }) {
       `(spheres, lights, background_color). Give an adapter whose setup(module, given, adapter) sets your ` +
       `own, as module.${called} = ... from given.scene (${template})`
     );
+  const shapes =
+    language === "python"
+      ? "vectors as named tuples (x, y, z), colours as tuples, spheres, lights and scenes as records of the book's fields " +
+        "(numpy arrays where your module uses numpy, your Sphere where it has one)"
+      : "vectors as arrays [x, y, z] (or your Vec, Vec3, Vector, Vector3 or Vertex, made with (x, y, z)), colours as " +
+        "arrays (or your Color), spheres, lights and scenes as objects with the book's fields (or your Sphere)";
   return (
     `${name} calls \`${called}\`, which what the checker gives it does not have: it gives ${shapes}. Give an ` +
-    `adapter whose vector(value), color(value) or sphere(value) makes your own types (\`--adapter-template ${chapter.slice(0, 2)} ${file}\` ` +
-    "prints one to fill in)"
+    `adapter whose vector(value), color(value) or sphere(value) makes your own types (${template})`
   );
 }
 
