@@ -127,7 +127,7 @@ printf 'function CanvasToViewport(x, y) {\n}\nconst IntersectRaySphere = (O, D, 
 for file in "$work/starter.js" $([ $have_python -eq 0 ] || echo "$work/starter.py"); do
   run 02 "$file"
   check "$(basename "$file"): each empty function is not written yet" \
-    test "$(grep -cE "^  (CanvasToViewport|IntersectRaySphere) +not written yet \(5 cases\)" "$work/out.txt")" -eq 2
+    test "$(grep -cE "^  (CanvasToViewport|IntersectRaySphere) +not written yet \([0-9]+ cases\)" "$work/out.txt")" -eq 2
 done
 
 echo "== bad input: one line each"
@@ -172,7 +172,7 @@ if [ $have_python -eq 1 ]; then
   cp "$students/own_names.py" "$work/own_names.py"
   run 02 "$work/own_names.py" --adapter "$work/own_names_adapter.py"
   check "with that adapter only the non-square viewport fails" test "$(grep -c FAILED "$work/out.txt")" -eq 1
-  check "(that one)" says "^  CanvasToViewport +FAILED 1 of 5 cases"
+  check "(that one)" says "^  CanvasToViewport +FAILED 1 of 6 cases"
   check "told why: its viewport is square" says "case 4 of 02-basic-rays.json: your viewport is square \(\`VIEWPORT_SIZE\`\)"
   check "with an adapter, no line says the checker set anything" lacks "the checker set"
   echo "== Python: a default argument bound when the def ran"
@@ -200,9 +200,15 @@ check "the one case its square viewport cannot pass says that the demos and the 
   says "^    case 4 of 02-basic-rays.json: this is where the demos and the book differ: the demos' viewport is square \(viewport_size\)"
 check "nothing else fails" test "$(grep -c "FAILED" "$work/out.txt")" -eq 1
 run 02 "$students/demo-page.html"
+check "the page's CanvasToViewport(p2d) is called as the demos call it, with one point [x, y]" \
+  says "^      CanvasToViewport\(p2d\) with "
 check "the page's TraceRay passes" says "^  TraceRay +passed \(9 cases\)"
 check "and its IntersectRaySphere" says "^  IntersectRaySphere +passed \(5 cases\)"
 check "nothing but the square viewport's case fails" test "$(grep -c FAILED "$work/out.txt")" -eq 1
+sed -e 's|p2d\[1\] \* viewport_size / canvas.height|p2d[1] * viewport_size / canvas.width|' "$students/demo-page.html" >"$work/y-by-width.html"
+run 02 "$work/y-by-width.html"
+check "y scaled by the width on the demos' square viewport is caught, as a mistake, not as where the demos differ" \
+  says "^    case 6 of 02-basic-rays.json: y scaled by the canvas's width instead of its height, on a square viewport"
 sed -e 's/min_t <= ts\[\([01]\)\] && ts\[\1\] <= max_t/min_t < ts[\1] \&\& ts[\1] < max_t/' "$students/demo-page.html" >"$work/open-interval.html"
 run 02 "$work/open-interval.html"
 check "a page with the demos' open interval fails the two cases on the interval's ends" says "^  TraceRay +FAILED 2 of 9 cases"
@@ -340,7 +346,7 @@ printf 'import { fileURLToPath } from "node:url";\nexport let Cw = 600, Ch = 600
 run 02 "$styles/book-module.mjs"
 if node -e 'process.exit(typeof require("module").register === "function" ? 0 : 1)'; then
   check "an ES module's own Cw, Vw and d (let and const) are set for each case, its main guard shut" \
-    says "^  CanvasToViewport +passed \(5 cases\)"
+    says "^  CanvasToViewport +passed \(6 cases\)"
 fi
 printf 'require("fs").writeFileSync("out.ppm", "P3");\nfunction CanvasToViewport(x, y) { return [0, 0, 1]; }\n' >"$styles/writes.js"
 run 02 "$styles/writes.js"

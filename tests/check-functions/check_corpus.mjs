@@ -2,7 +2,8 @@
 // The function checker against the corpus of student chapters in tests/check-functions/
 // corpus (corpus.json): written apart from the references, in natural styles. Each file
 // passes as written, with no adapter and no edit but the one its entry names (or, where
-// it truly differs from the book, fails with the one line its entry gives); with
+// it truly differs from the book, fails with the one line its entry gives, for each
+// function its entry's `differs` lists); with
 // --mistakes, also each planted mistake fails the function it is in, and the first line
 // of that function's block after its heading is the one its entry gives (the test
 // command runs the files as written; scripts/deep-checks' mistakes part, the mistakes
@@ -87,19 +88,22 @@ for (const entry of files) {
 
   const as = run(chapter, file, adapter, envPath);
   if (entry.differs) {
-    const lines = block(as.output, entry.differs.function);
-    check(
-      `${entry.file}: where it differs from the book, ${entry.differs.function} fails with one line saying why`,
-      as.status === 1 &&
-        /FAILED/.test(lines[0] ?? "") &&
-        new RegExp(entry.differs.first).test(lines[1] ?? ""),
-      as.output,
-    );
+    const differs = [entry.differs].flat();
+    for (const { function: name, first } of differs) {
+      const lines = block(as.output, name);
+      check(
+        `${entry.file}: where it differs from the book, ${name} fails with one line saying why`,
+        as.status === 1 && /FAILED/.test(lines[0] ?? "") && new RegExp(first).test(lines[1] ?? ""),
+        as.output,
+      );
+    }
     check(
       `${entry.file}: and every other function passes`,
       as.output
         .split("\n")
-        .filter((line) => /^  \S/.test(line) && !line.includes(entry.differs.function))
+        .filter(
+          (line) => /^  \S/.test(line) && !differs.some((each) => line.includes(each.function)),
+        )
         .every((line) => / passed \(| not checked against /.test(line)),
       as.output,
     );
@@ -134,6 +138,19 @@ for (const entry of files) {
 }
 console.log(
   `corpus: ${[...styles].map(([language, count]) => `${count} ${language}`).join(", ")} files, ${checks} checks`,
+);
+// docs/students.md counts the corpus: its files in each language, its planted mistakes.
+const docs = fs.readFileSync(path.join(source, "docs", "students.md"), "utf8").replace(/\s+/g, " ");
+const said = /(\d+) files, (\d+) in JavaScript and (\d+) in Python/.exec(docs);
+const mistakes = files.reduce((sum, entry) => sum + (entry.mistakes ?? []).length, 0);
+const [javascript, python] = ["JavaScript", "Python"].map(
+  (language) =>
+    files.filter((entry) => /\.py$/.test(entry.file) === (language === "Python")).length,
+);
+check(
+  `docs/students.md counts the corpus: ${files.length} files, ${javascript} in JavaScript and ${python} in Python; ${mistakes} mistakes`,
+  said?.slice(1).join() === [files.length, javascript, python].join() &&
+    new RegExp(`one at a time \\(${mistakes} in all\\)`).test(docs),
 );
 if (failed === 0) {
   console.log(

@@ -39,7 +39,7 @@ run() {
 }
 forged() {  # WHAT: the forger failed its case, and learnt nothing of the checker
   check "$1: exit status 1" test $status -eq 1
-  check "$1: CanvasToViewport failed" says "^  CanvasToViewport +FAILED 5 of 5 cases"
+  check "$1: CanvasToViewport failed" says "^  CanvasToViewport +FAILED 6 of 6 cases"
   check "$1: no answer found (0 answers)" says "\(0 answers\)"
   check "$1: /proc/1 shows none of the checker's command line or environment" \
     bash -c 'grep "leaked:" "$1" | grep -q . && ! grep "leaked:" "$1" | grep -qE "check-functions\.js|CGFS_LAYOUT_SECRET|checker-environment|HOME=|PATH="' _ "$work/out.txt"

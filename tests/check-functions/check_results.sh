@@ -68,31 +68,32 @@ for language in "${languages[@]}"; do
   echo "== $language: complete"
   run 02 "$base" --json "$work/complete.json"
   check "$language: a chapter that passes every case is complete, exit 0" test $status -eq 0
-  check "$language: (its last line)" says "^chapter: complete \(19 cases: 19 passed\)$"
+  check "$language: (its last line)" says "^chapter: complete \(20 cases: 20 passed\)$"
   check "$language: its results.json is valid" valid "$work/complete.json"
-  check "$language: 19 tests, 19 points" test "$(field "$work/complete.json" 'r.tests.length + " " + r.score')" = "19 19"
+  check "$language: 20 tests, 20 points" test "$(field "$work/complete.json" 'r.tests.length + " " + r.score')" = "20 20"
 
   echo "== $language: incomplete, with what the code printed"
   run 02 "$file" --json "$work/incomplete.json"
   check "$language: a case failed: incomplete, exit 1" test $status -eq 1
-  check "$language: (its last line)" says "^chapter: incomplete \(19 cases: 18 passed, 1 failed\)$"
+  check "$language: (its last line)" says "^chapter: incomplete \(20 cases: 18 passed, 2 failed\)$"
   check "$language: what the code printed in that case, under it" says "^      \| canvas point 300 -200$"
-  check "$language: only that case's printing" bash -c '[ "$(grep -c "| canvas point" "$1")" -eq 1 ]' _ "$work/out.txt"
+  check "$language: only the failed cases' printing (cases 4 and 6)" bash -c '[ "$(grep -c "| canvas point" "$1")" -eq 2 ]' _ "$work/out.txt"
   check "$language: not what the file printed as it loaded" bash -c '! grep -q "| loading the chapter" "$1"' _ "$work/out.txt"
   check "$language: its results.json is valid" valid "$work/incomplete.json"
   check "$language: the failed test keeps what was printed, marked as the student's" \
     test "$(field "$work/incomplete.json" 'r.tests.filter((t) => t.status === "failed").map((t) => [t.extra_data.case, t.extra_data.status, t.extra_data.printed.trim(), t.extra_data.printed_by].join("|")).join(",")')" = \
-    "4|fail|canvas point 300 -200|the student's code"
+    "4|fail|canvas point 300 -200|the student's code,6|fail|canvas point 300 -200|the student's code"
   check "$language: returned and expected, as data" \
     test "$(field "$work/incomplete.json" 'JSON.stringify(r.tests[3].extra_data.expected)')" = "[0.75,-0.5,1]"
   check "$language: the verdict in the file" test "$(field "$work/incomplete.json" 'r.extra_data.verdict')" = incomplete
   # The command printed under the case runs it alone, and says the same.
-  alone=$(sed -n 's/^      alone: //p' "$work/out.txt")
+  alone=$(sed -n 's/^      alone: //p' "$work/out.txt" | head -1)
   (cd "$source_dir" && eval "$alone") >"$work/alone.txt" 2>&1 && status=0 || status=$?
   check "$language: the 'alone' command runs that case alone, exit 1" \
     bash -c '[ "$1" -eq 1 ] && grep -q "^CanvasToViewport, case 4: incomplete (1 case: 1 failed)$" "$2"' _ $status "$work/alone.txt"
   # The call to paste into a REPL gives what the checker reports.
-  mapfile -t call < <(sed -n '/^      in \(python3\|node\), in your file.s folder:$/,/^  [A-Z]/p' "$work/out.txt" | sed -n 's/^        //p')
+  mapfile -t call < <(awk '/^      in (python3|node), in your file.s folder:$/ { inside = 1; next }
+    inside && !/^        / { exit } inside { sub(/^        /, ""); print }' "$work/out.txt")
   if [ "$language" = py ]; then
     printf '%s\n' "${call[@]}" | sed '$ s/.*/print(list(&))/' | (cd "$work/py" && python3 -) >"$work/repl.txt" 2>&1 || true
     check "py: the REPL call gives the value the checker reported" grep -q "^\[0.75, -0.3333333333333333, 1\]$" "$work/repl.txt"
@@ -111,7 +112,7 @@ for language in "${languages[@]}"; do
   fi
   run 02 "$one" --json "$work/partial.json"
   check "$language: one function written and passing: partial, exit 3" test $status -eq 3
-  check "$language: (its last line)" says "^chapter: partial \(19 cases: 5 passed, 14 not written yet\)$"
+  check "$language: (its last line)" says "^chapter: partial \(20 cases: 6 passed, 14 not written yet\)$"
   check "$language: its results.json is valid" valid "$work/partial.json"
   check "$language: the unwritten cases are 'not written'" \
     test "$(field "$work/partial.json" 'r.tests.filter((t) => t.extra_data.status === "not written").length')" = 14
@@ -140,7 +141,7 @@ open(sys.argv[2], "w").write(text[:start] + listing)
 PY
   run 03 "$work/py/listing31.py" --json "$work/listing31.json"
   check "a chapter 3 of Listing 3-1 alone is partial, exit 3" test $status -eq 3
-  check "(3 cases not checked, TraceRay not written)" says "^chapter: partial \(23 cases: 14 passed, 6 not written yet, 3 not checked\)$"
+  check "(3 cases not checked, TraceRay not written)" says "^chapter: partial \(24 cases: 15 passed, 6 not written yet, 3 not checked\)$"
   check "its results.json is valid" valid "$work/listing31.json"
 
   echo "== a file that cannot be checked, and where --json may not write"

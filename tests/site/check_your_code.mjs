@@ -909,6 +909,48 @@ async function checkPythonMistake() {
   sameReport("Python, y scaled by the width", report, cliReport("02-basic-rays", file));
 }
 
+// The demos' CanvasToViewport(p2d), one canvas point [x, y], in either language: the
+// page checks it as the command line does and draws Figure 2-11 with it, called with
+// [x, y] as the check calls it.
+async function checkDemosSignature() {
+  const forms = {
+    javascript: [
+      "function CanvasToViewport(x, y) {",
+      "function CanvasToViewport(p2d) {\n  const [x, y] = [p2d[0], p2d[1]];",
+    ],
+    python: ["def CanvasToViewport(x, y):", "def CanvasToViewport(p2d):\n    x, y = p2d"],
+  };
+  for (const [language, [book, demos]] of Object.entries(forms)) {
+    const ours = referenceOf("02-basic-rays", language);
+    const code = readFileSync(ours, "utf8").replace(book, demos);
+    if (!code.includes(demos)) fail(`${basename(ours)} has no ${book}`);
+    const file = join(work, `demos-${language}`, basename(ours));
+    execFileSync("mkdir", ["-p", join(work, `demos-${language}`)]);
+    writeFileSync(file, code);
+    await openPanel("02-basic-rays", language);
+    await openFile(ours);
+    await type(code);
+    const { report } = await runCheck(`the demos' CanvasToViewport(p2d) (${language})`);
+    sameReport(
+      `the demos' CanvasToViewport(p2d) (${language})`,
+      report,
+      cliReport("02-basic-rays", file),
+    );
+    if (
+      !/^ {2}CanvasToViewport +passed \(\d+ cases\)\n {4}called as CanvasToViewport\(p2d\)/m.test(
+        report,
+      )
+    )
+      fail(`the demos' CanvasToViewport(p2d) (${language}) is not checked as theirs:\n${report}`);
+    const drawn = await draw("fig-2-11");
+    if (drawn.verdict !== "pass")
+      fail(`fig-2-11 drawn with the demos' CanvasToViewport(p2d) (${language}): ${drawn.status}`);
+  }
+  console.log(
+    "the demos' CanvasToViewport(p2d) is checked and draws Figure 2-11, in both languages",
+  );
+}
+
 async function checkCardResponsive() {
   await browser.open("16-business-card/index.html");
   await browser.waitFor(
@@ -1058,6 +1100,7 @@ const parts = {
     );
     await checkPythonMistake();
   },
+  demos: checkDemosSignature,
   card: checkCardResponsive,
   layout: checkLayout,
   docs: checkDocsExample,

@@ -4,7 +4,13 @@
 // its code's syntax, and the editor's starters.
 import { heldAgainstFile, isAccount } from "../check-functions/core/account.mjs";
 import { NAMES } from "../check-functions/core/names.mjs";
-import { CASE_LIMIT, LOAD_LIMIT, functionsOf, sections } from "../check-functions/core/plan.mjs";
+import {
+  CASE_LIMIT,
+  LOAD_LIMIT,
+  functionsOf,
+  sections,
+  signatureFor,
+} from "../check-functions/core/plan.mjs";
 import { CheckError, check, stoppedLine } from "../check-functions/core/report.mjs";
 import {
   carriedForward,
@@ -29,5 +35,6 @@ globalThis.CGFS_CHECK = {
   isAccount,
   previousChapter,
   sections,
+  signatureFor,
   stoppedLine,
 };

@@ -269,15 +269,17 @@ class PageRunner {
 }
 
 // A figure drawn by the reader's functions, in a fresh worker: { pixels, width, height },
-// or { problem } (one line), or { cancelled } when `cancel` was called first.
+// or { problem } (one line), or { cancelled } when `cancel` was called first. `entries`:
+// the case files' entry of every function the recipe may call; each is called with the
+// parameters of the signature the reader's function takes (the book's, or the demos'
+// CanvasToViewport(p2d)), as the check calls it.
 async function drawWithCode({
   language,
   code,
   file,
-  functions,
   names,
   recipe,
-  kinds,
+  entries,
   seconds,
   onProgress,
   onStatus,
@@ -290,7 +292,14 @@ async function drawWithCode({
   drawWithCode.current = worker;
   try {
     onStatus("loading your code…");
-    await loadInWorker(worker, { code, file, functions, names });
+    const functions = Object.keys(entries);
+    const facts = await loadInWorker(worker, { code, file, functions, names });
+    const kinds = Object.fromEntries(
+      functions.map((name) => {
+        const signature = CGFS_CHECK.signatureFor(entries[name], facts.functions[name]?.parameters);
+        return [name, (signature ?? entries[name]).parameters];
+      }),
+    );
     onStatus("drawing…");
     const answer = await worker.request({ op: "draw", recipe, kinds }, seconds);
     if (answer.timeout) return { problem: `still drawing after ${seconds} s` };

@@ -239,13 +239,13 @@
     }
   }
 
-  // The parameters, and their kinds, of every function a figure's recipe may call.
-  function parameterKinds() {
-    const kinds = {};
+  // The case files' entry of every function a figure's recipe may call.
+  function functionEntries() {
+    const entries = {};
     for (const section of CGFS_CHECK.sections(yourCode.chapter, yourCode.files)) {
-      for (const entry of section.entries) kinds[entry.function] ??= entry.parameters;
+      for (const entry of section.entries) entries[entry.function] ??= entry;
     }
-    return kinds;
+    return entries;
   }
 
   async function ourFigures() {
@@ -341,10 +341,9 @@
       language: yourCode.language,
       code: yourCode.editor.getValue(),
       file: yourCode.file,
-      functions: Object.keys(parameterKinds()),
       names: CGFS_CHECK.NAMES,
       recipe,
-      kinds: parameterKinds(),
+      entries: functionEntries(),
       seconds: kDrawLimit,
       onStatus: setStatus,
       onStarting: pythonStarting,

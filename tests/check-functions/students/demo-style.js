@@ -46,8 +46,8 @@ const lights = [
   new Light(Light.DIRECTIONAL, 0.2, new Vec(1, 4, 4)),
 ];
 
-function CanvasToViewport(x, y) {
-  return new Vec(x * viewport_size / canvas.width, y * viewport_size / canvas.height, projection_plane_z);
+function CanvasToViewport(p2d) {
+  return new Vec(p2d[0] * viewport_size / canvas.width, p2d[1] * viewport_size / canvas.height, projection_plane_z);
 }
 
 function IntersectRaySphere(origin, direction, sphere) {
@@ -103,7 +103,7 @@ if (process.argv[2]) {
   const rows = [];
   for (let y = canvas.height / 2 - 1; y >= -canvas.height / 2; y--) {
     for (let x = -canvas.width / 2; x < canvas.width / 2; x++) {
-      const c = TraceRay(new Vec(0, 0, 0), CanvasToViewport(x, y), 1, Infinity);
+      const c = TraceRay(new Vec(0, 0, 0), CanvasToViewport([x, y]), 1, Infinity);
       rows.push([c.r, c.g, c.b].map((v) => Math.round(Math.min(255, Math.max(0, v)))).join(" "));
     }
   }

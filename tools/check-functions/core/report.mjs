@@ -345,20 +345,26 @@ async function checkFunction(entry, fact, context) {
       ),
     );
   const lines = [];
-  // Another listing's parameters: which cases that leaves, and why.
+  // Another listing's parameters: which cases that leaves, and why; where it leaves them
+  // all, the signature called (on a failure each case's call line names it).
   const partial = [];
+  const called = [];
   if (signature.call !== entry.call && skipped.length > 0) {
     partial.push(
       `    only its cases for ${signature.call} (${signature.where}): the other ${skipped.length} ` +
         `call ${entry.call} (${entry.where})`,
     );
   } else if (signature.call !== entry.call) {
-    partial.push(`    called as ${signature.call} (${signature.where})`);
+    called.push(`    called as ${signature.call} (${signature.where})`);
   }
   const count =
     cases.length < all.length ? `${cases.length} of ${casesOf(all.length)}` : casesOf(cases.length);
   if (failures.length === 0)
-    return { failed: false, lines: [`  ${name} passed (${count})`, ...partial], records };
+    return {
+      failed: false,
+      lines: [`  ${name} passed (${count})`, ...partial, ...called],
+      records,
+    };
   lines.push(`  ${name} FAILED ${failures.length} of ${count}`, ...partial);
   // A bound default explains itself: the names a function reads come after it is fixed.
   const notes = boundNote(entry.function, fact);

@@ -497,6 +497,8 @@ export function defaultAdapter(made) {
     vector: (value) => made.vector(...numbers(value)) ?? named(numbers(value), ["x", "y", "z"]),
     point: ([x, y, h = 1]) =>
       made.point(number(x), number(y), number(h)) ?? { x: number(x), y: number(y), h: number(h) },
+    // A canvas point as the demos' ray tracers pass it, CanvasToViewport([x, y]).
+    pair: (value) => named(numbers(value), ["x", "y"]),
     color: (value) => made.color(...numbers(value)) ?? named(numbers(value), ["r", "g", "b"]),
     matrix: (rows) => made.matrix(rows.map(numbers)) ?? rows.map(numbers),
     rows: (rows) => rows.map(numbers),
@@ -688,6 +690,15 @@ export function plain(value, budget, depth = 0) {
   return fields;
 }
 
+// A call's arguments, each built by its parameter's kind from the case's value (or, for
+// a parameter made of several, `from`, from theirs: the demos' p2d from x and y).
+function argumentsOf(parameters, call, adapter) {
+  return parameters.map(([name, kind, from]) => {
+    const value = decoded(from ? from.map((each) => call[each]) : call[name]);
+    return kind === "number" ? number(value) : adapter[kind](value, adapter);
+  });
+}
+
 // What the function made of one case: { returned, arguments, pixels, placed }, or
 // { raised } / { adapter_failed }.
 export function runCase(request, chapter, adapter, names, readNames, functionReads, ours = []) {
@@ -707,12 +718,7 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
     placed = place(chapter, names, given, adapter, readNames);
     if (adapter.setup)
       placed.push(...setUpByAdapter(chapter, adapter, given, functionReads(request.function)));
-    calls = request.calls.map((call) =>
-      request.parameters.map(([name, kind, from]) => {
-        const value = decoded(from ? from.map((each) => call[each]) : call[name]);
-        return kind === "number" ? number(value) : adapter[kind](value, adapter);
-      }),
-    );
+    calls = request.calls.map((call) => argumentsOf(request.parameters, call, adapter));
   } catch (error) {
     if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
     return { adapter_failed: oneLine(error, ours) };
@@ -819,7 +825,15 @@ export function drawFigure(recipe, chapter, adapter, names, readNames, kinds, pr
   };
   if (recipe.rays) {
     const { origin, direction, t_min: tMin, recursion_depth: depth } = recipe.rays;
-    const [trace, through] = [theirs("TraceRay"), theirs(direction)];
+    const trace = theirs("TraceRay");
+    // The book's (x, y) straight through; another signature's (the demos' p2d) built as
+    // its cases are, from x and y.
+    const own = theirs(direction);
+    const pixel = kinds[direction];
+    const through =
+      !pixel || pixel.every(([, kind, from]) => kind === "number" && !from)
+        ? own
+        : (x, y) => own(...argumentsOf(pixel, { x, y }, adapter));
     const O = adapter.vector(origin, adapter);
     for (let x = -Math.floor(width / 2); x < Math.ceil(width / 2); ++x) {
       for (let y = -Math.floor(height / 2); y < Math.ceil(height / 2); ++y) {

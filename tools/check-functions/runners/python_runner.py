@@ -45,6 +45,7 @@ MAX_PRINTED = 4000  # characters of what one case printed, kept for the report
 
 Point = collections.namedtuple("Point", "x y h", defaults=(1.0,))  # h: chapter 8's intensity
 Vector = collections.namedtuple("Vector", "x y z")
+Pair = collections.namedtuple("Pair", "x y")  # a canvas point as the demos pass it: (x, y)
 
 
 class LoadError(Exception):
@@ -123,6 +124,10 @@ class DefaultAdapter:
     @staticmethod
     def point(value):
         return Point(*numbers(value))
+
+    @staticmethod
+    def pair(value):
+        return Pair(*numbers(value))
 
     @staticmethod
     def color(value):
@@ -928,6 +933,7 @@ def adapted(adapter_module, main):
             "vector",
             "vectors",
             "point",
+            "pair",
             "color",
             "booleans",
             "matrix",
@@ -966,6 +972,7 @@ def channel(value):
 
 
 notes = []  # what the last figure drawn has to say of the reader's points (fraction_note)
+BY_PIXEL = [["x", "number"], ["y", "number"]]  # the book's CanvasToViewport(x, y)
 
 
 def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=None):
@@ -1014,6 +1021,15 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
         origin = chapter.adapter.vector(rays["origin"])
         depth = rays.get("recursion_depth")
 
+        # The book's (x, y) straight through; another signature's (the demos' p2d) built
+        # as its cases are, from x and y.
+        pixel = kinds.get(rays["direction"], BY_PIXEL)
+        if pixel != BY_PIXEL:
+            own = through
+
+            def through(x, y):
+                return own(*[argument(chapter.adapter, spec, {"x": x, "y": y}) for spec in pixel])
+
         def ray(x, y):
             D = through(x, y)
             return (
@@ -1036,7 +1052,7 @@ def draw_figure(recipe, chapter, kinds, progress=lambda fraction: None, preview=
 
         def call(name, args):
             values = []
-            for parameter, kind in kinds.get(name, []):
+            for parameter, kind, *_ in kinds.get(name, []):
                 value = args[parameter]
                 if isinstance(value, dict) and "call" in value:
                     made = call(value["call"], value["args"])
