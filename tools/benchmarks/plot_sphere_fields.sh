@@ -23,7 +23,8 @@ awk -F'"' '
     value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
     time[part[2], part[3]] = value; counts[part[2]] = 1
   }
-  /"real_time":/ && name ~ /^SphereFieldPrimary\/[0-9]+\/(plain|tuned|embree)\/real_time_median$/ {
+  /"real_time":/ && name ~ /^SphereFieldPrimary\/[0-9]+\/(plain|tuned|embree)\/real_time_median$/ &&
+    (FILENAME == ARGV[1] || name !~ /embree/) {
     split(name, part, "/")
     value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
     time[part[2], part[3]] = value; counts[part[2]] = 1
@@ -72,7 +73,8 @@ GNUPLOT
 # The tori: triangles, million rays a second plain, tuned and Embree.
 awk -F'"' '
   /"name":/ { name = $4 }
-  /"real_time":/ && name ~ /^MeshPrimary\/torus-[0-9]+\/(plain|tuned|embree)\/real_time_median$/ {
+  /"real_time":/ && name ~ /^MeshPrimary\/torus-[0-9]+\/(plain|tuned|embree)\/real_time_median$/ &&
+    (FILENAME == ARGV[1] || name !~ /embree/) {
     split(name, part, "/"); sub(/torus-/, "", part[2])
     value = $0; sub(/.*: */, "", value); sub(/,$/, "", value)
     time[part[2], part[3]] = value; counts[part[2]] = 1

@@ -10,7 +10,7 @@
 //   BvhBuild/<count>/<hierarchy>     building the hierarchy over a sphere field
 //   SphereFieldPrimary/<count>/...   only the primary rays at 600x600, one thread:
 //                                    the chapter's hierarchy (plain or tuned), and
-//                                    Embree's where it is installed (benchmark-05)
+//                                    Embree's where it is installed (in both programs)
 //   MeshPrimary/<mesh>/...           the same on triangle meshes: tori of 10 000,
 //                                    100 000 and 1 000 000 triangles, and the Wuson
 //                                    of assimp-testmodels (3 732) where installed
@@ -350,10 +350,8 @@ void RegisterAll() {
   }
   RegisterMeshes();
 #if !CGFS_HAVE_EMBREE
-  if (std::string(CGFS_HIERARCHY) == "plain") {
-    std::fprintf(stderr,
-                 "benchmark-05: built without Embree (Debian libembree-dev), so the "
-                 "SphereFieldPrimary/*/embree benchmarks are skipped\n");
-  }
+  std::fprintf(stderr,
+               "built without Embree (Debian libembree-dev), so the "
+               "SphereFieldPrimary/*/embree and MeshPrimary/*/embree benchmarks are skipped\n");
 #endif
 }
