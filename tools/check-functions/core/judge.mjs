@@ -31,10 +31,11 @@ function matrix(value) {
   return flat;
 }
 
-// A triangle's three indices: [i, j, k], or a record with v (the book's) or indexes (the
-// demos').
+// A triangle's three indices: [i, j, k], or a record with v (the book's), or indexes or
+// v0, v1 and v2 (the demos').
 function indices(triangle) {
-  const each = Array.isArray(triangle) ? triangle : (triangle?.v ?? triangle?.indexes);
+  const spread = triangle?.v0 === undefined ? undefined : [triangle.v0, triangle.v1, triangle.v2];
+  const each = Array.isArray(triangle) ? triangle : (triangle?.v ?? triangle?.indexes ?? spread);
   return Array.isArray(each) && each.length === 3 && each.every((i) => Number.isInteger(i))
     ? each
     : null;
@@ -90,9 +91,12 @@ export function numbersOf(kind, answer, kase, parameters) {
     case "triangles": // a list of triangles or a model; none returned: the model it changed
       return triangles(value === null && answer.arguments ? answer.arguments[0] : value);
     case "corners": {
-      // each triangle's corners, looked up in the vertex list after the call
-      const vertices = answer.arguments?.[parameters.findIndex(([name]) => name === "vertices")];
-      const list = triangles(value);
+      // each triangle's corners, looked up in the vertex list after the call; the
+      // triangles returned, or (none returned) those appended to an output list
+      const after = (found) => answer.arguments?.[parameters.findIndex(found)];
+      const vertices = after(([name]) => name === "vertices");
+      const output = after(([, kind]) => kind === "output");
+      const list = triangles(value === null && output ? output : value);
       if (!list || !Array.isArray(vertices)) return null;
       const corners = list.map((i) => vector(vertices[i]));
       return corners.every(Boolean) ? corners.flat() : null;

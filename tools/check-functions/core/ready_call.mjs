@@ -79,7 +79,9 @@ export function readyCall(language, file, signature, kase, drawing) {
   const name = signature.call.split("(")[0];
   const argumentsOf = (call, format) =>
     signature.parameters.map(([parameter, kind, from]) =>
-      format(from ? from.map((each) => call[each]) : call[parameter], kind),
+      kind === "output" // a list the function appends to: empty
+        ? "[]"
+        : format(from ? from.map((each) => call[each]) : call[parameter], kind),
     );
   if (language === "python") {
     const module = file.replace(/\.py$/, "");

@@ -308,7 +308,9 @@ async function checkFunction(entry, fact, context) {
         ],
       };
     }
-    const { status, lines: problem, slip } = outcome(answer, kase, entry, options);
+    // Judged by the parameters it was called with (an output list's place among them).
+    const called = { ...entry, parameters: signature.parameters };
+    const { status, lines: problem, slip } = outcome(answer, kase, called, options);
     const printed = printedOf(answer);
     records.push(
       record(entry, caseFile, number, status, problem.join("; "), {
@@ -328,7 +330,7 @@ async function checkFunction(entry, fact, context) {
         problem,
         answer,
         slip,
-        demos: demosAnswer(answer, kase, entry, options),
+        demos: demosAnswer(answer, kase, called, options),
       });
   }
   const skipped = entry.cases

@@ -471,6 +471,27 @@ function named(array, names) {
   return array;
 }
 
+// A record that also reads and writes its fields under the demos' names (aliases: the
+// demos' name -> the book's field, and an index into it where the demos spread a list),
+// as a triangle's indexes (demos/raster-10.html and on) or v0, v1, v2 (raster-09) for
+// its v; the aliases are not its own keys, so it spreads and prints as the book's record.
+function aliased(record, aliases) {
+  for (const [alias, [field, index]] of Object.entries(aliases)) {
+    Object.defineProperty(record, alias, {
+      get() {
+        return index === undefined ? this[field] : this[field][index];
+      },
+      set(value) {
+        if (index === undefined) this[field] = value;
+        else this[field][index] = value;
+      },
+      enumerable: false,
+      configurable: true,
+    });
+  }
+  return record;
+}
+
 // The fields a case's code read from the checker's scene that it does not have (a
 // scene of the student's own, `scene.background`): JavaScript gives undefined where
 // Python raises, so a failing case names them as Python's AttributeError does. Reset
@@ -503,16 +524,24 @@ export function defaultAdapter(made) {
     matrix: (rows) => made.matrix(rows.map(numbers)) ?? rows.map(numbers),
     rows: (rows) => rows.map(numbers),
     vectors: (value, adapter) => value.map((each) => adapter.vector(each, adapter)),
-    plane: (value, adapter) => ({
-      normal: adapter.vector(value.normal, adapter),
-      D: number(value.D),
-    }),
+    plane: (value, adapter) =>
+      aliased(
+        { normal: adapter.vector(value.normal, adapter), D: number(value.D) },
+        { distance: ["D"] },
+      ),
     booleans: (value) => value.map(Boolean),
     tangent_basis: (value, adapter) => ({
       T: adapter.vector(value.T, adapter),
       B: adapter.vector(value.B, adapter),
     }),
-    triangle: (value, adapter) => ({ v: [...value.v], color: adapter.color(value.color, adapter) }),
+    triangle: (value, adapter) =>
+      aliased(
+        { v: [...value.v], color: adapter.color(value.color, adapter) },
+        { indexes: ["v"], v0: ["v", 0], v1: ["v", 1], v2: ["v", 2] },
+      ),
+    // A list the function appends its results to (the demos' ClipTriangle(triangle, plane,
+    // triangles, vertices)): empty.
+    output: () => [],
     model: (value, adapter) => ({
       vertices: adapter.vectors(value.vertices, adapter),
       triangles: value.triangles.map((each) => adapter.triangle(each, adapter)),
@@ -647,6 +676,9 @@ const FIELDS = [
   "radius",
   "v",
   "indexes",
+  "v0",
+  "v1",
+  "v2",
   "data",
   "triangles",
   "vertices",

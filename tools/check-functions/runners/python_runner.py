@@ -54,7 +54,23 @@ class LoadError(Exception):
 
 class Record(types.SimpleNamespace):
     """One of the book's records (a sphere, a light, a scene...): its fields read as
-    attributes or as a dict's keys, sphere.radius or sphere["radius"]."""
+    attributes or as a dict's keys, sphere.radius or sphere["radius"]; a triangle's v
+    also as the demos' indexes or v0, v1 and v2, a plane's D as their distance."""
+
+    ALIASES = {
+        "indexes": ("v",),
+        "v0": ("v", 0),
+        "v1": ("v", 1),
+        "v2": ("v", 2),
+        "distance": ("D",),
+    }
+
+    def __getattr__(self, name):  # only for a name the record does not have
+        field, *index = Record.ALIASES.get(name, (None,))
+        if field in vars(self):
+            value = vars(self)[field]
+            return value[index[0]] if index else value
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     def __getitem__(self, name):
         try:
@@ -128,6 +144,12 @@ class DefaultAdapter:
     @staticmethod
     def pair(value):
         return Pair(*numbers(value))
+
+    @staticmethod
+    def output(value):
+        """A list the function appends its results to (the demos' ClipTriangle(triangle,
+        plane, triangles, vertices)): empty."""
+        return []
 
     @staticmethod
     def color(value):
@@ -751,7 +773,8 @@ def run_case(request, chapter):
 def argument(adapter, spec, call):
     """One argument of a call, built from the case's value(s) by its kind."""
     name, kind = spec[0], spec[1]
-    value = [call[each] for each in spec[2]] if len(spec) > 2 else call[name]
+    # (an output list has no value in the case: None)
+    value = [call[each] for each in spec[2]] if len(spec) > 2 else call.get(name)
     return number(value) if kind == "number" else getattr(adapter, kind)(value)
 
 
