@@ -350,21 +350,21 @@ async function checkFunction(entry, fact, context) {
   // Another listing's parameters: which cases that leaves, and why; where it leaves them
   // all, the signature called (on a failure each case's call line names it).
   const partial = [];
-  const called = [];
+  const calledAs = [];
   if (signature.call !== entry.call && skipped.length > 0) {
     partial.push(
       `    only its cases for ${signature.call} (${signature.where}): the other ${skipped.length} ` +
         `call ${entry.call} (${entry.where})`,
     );
   } else if (signature.call !== entry.call) {
-    called.push(`    called as ${signature.call} (${signature.where})`);
+    calledAs.push(`    called as ${signature.call} (${signature.where})`);
   }
   const count =
     cases.length < all.length ? `${cases.length} of ${casesOf(all.length)}` : casesOf(cases.length);
   if (failures.length === 0)
     return {
       failed: false,
-      lines: [`  ${name} passed (${count})`, ...partial, ...called],
+      lines: [`  ${name} passed (${count})`, ...partial, ...calledAs],
       records,
     };
   lines.push(`  ${name} FAILED ${failures.length} of ${count}`, ...partial);
