@@ -920,7 +920,13 @@ async function checkDemosSignature() {
     ],
     python: ["def CanvasToViewport(x, y):", "def CanvasToViewport(p2d):\n    x, y = p2d"],
   };
+  // JavaScript on a desktop's window, Python on a phone's.
+  const sizes = {
+    javascript: { width: 1280, height: 900, deviceScaleFactor: 1, mobile: false },
+    python: { width: 390, height: 844, deviceScaleFactor: 1, mobile: true },
+  };
   for (const [language, [book, demos]] of Object.entries(forms)) {
+    await browser.send("Emulation.setDeviceMetricsOverride", sizes[language]);
     const ours = referenceOf("02-basic-rays", language);
     const code = readFileSync(ours, "utf8").replace(book, demos);
     if (!code.includes(demos)) fail(`${basename(ours)} has no ${book}`);
@@ -942,10 +948,13 @@ async function checkDemosSignature() {
       )
     )
       fail(`the demos' CanvasToViewport(p2d) (${language}) is not checked as theirs:\n${report}`);
+    await screenshot(`demos-${language}-report`, "code-report");
     const drawn = await draw("fig-2-11");
+    await screenshot(`demos-${language}-drawing`, "code-drawing");
     if (drawn.verdict !== "pass")
       fail(`fig-2-11 drawn with the demos' CanvasToViewport(p2d) (${language}): ${drawn.status}`);
   }
+  await browser.send("Emulation.setDeviceMetricsOverride", sizes.javascript);
   console.log(
     "the demos' CanvasToViewport(p2d) is checked and draws Figure 2-11, in both languages",
   );
