@@ -38,6 +38,10 @@ jsonschema.validate(json.load(open(sys.argv[2])), json.load(open(sys.argv[1])))
 PY
 }
 invalid() { ! valid "$1" 2>/dev/null; }
+repl_call() {  # the lines to paste into a REPL, from the first failed case of out.txt
+  awk '/^      in (python3|node), in your file.s folder:$/ { inside = 1; next }
+    inside && !/^        / { exit } inside { sub(/^        /, ""); print }' "$work/out.txt"
+}
 field() {  # FILE EXPRESSION: a value of the results file, by a JavaScript expression on r
   node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8")); console.log(eval(process.argv[2]))' "$1" "$2"
 }
@@ -92,8 +96,7 @@ for language in "${languages[@]}"; do
   check "$language: the 'alone' command runs that case alone, exit 1" \
     bash -c '[ "$1" -eq 1 ] && grep -q "^CanvasToViewport, case 4: incomplete (1 case: 1 failed)$" "$2"' _ $status "$work/alone.txt"
   # The call to paste into a REPL gives what the checker reports.
-  mapfile -t call < <(awk '/^      in (python3|node), in your file.s folder:$/ { inside = 1; next }
-    inside && !/^        / { exit } inside { sub(/^        /, ""); print }' "$work/out.txt")
+  mapfile -t call < <(repl_call)
   if [ "$language" = py ]; then
     printf '%s\n' "${call[@]}" | sed '$ s/.*/print(list(&))/' | (cd "$work/py" && python3 -) >"$work/repl.txt" 2>&1 || true
     check "py: the REPL call gives the value the checker reported" grep -q "^\[0.75, -0.3333333333333333, 1\]$" "$work/repl.txt"
@@ -161,6 +164,25 @@ PY
   check "--function of no such function: exit 2, one line" bash -c '[ "$1" -eq 2 ] && [ "$(wc -l <"$2")" -eq 1 ]' _ $status "$work/out.txt"
   run 02 "$work/py/one.py" --case 3
   check "--case without --function: exit 2" test $status -eq 2
+fi
+echo "== the demos' names: the call to paste gives the records the checker gave"
+# The checker's planes also answer to the demos' distance, its triangles to indexes, v0,
+# v1 and v2; the call under a failed case gives each name the case's code read.
+printf '%s\n' 'var SignedDistance = function (plane, vertex) {' \
+  '  var n = plane.normal;' \
+  '  return n[0] * vertex[0] + n[1] * vertex[1] + n[2] * vertex[2] - plane.distance;' \
+  '};' 'module.exports = { SignedDistance };' >"$work/js/demos11.js"
+run 11 "$work/js/demos11.js" --function SignedDistance --case 3
+check "js: a plane's distance, D subtracted: returned -3" says "^      returned -3, expected -5"
+repl_call | (cd "$work/js" && node -i) >"$work/repl.txt" 2>&1 || true
+check "js: the REPL call gives the plane its distance, and -3" grep -qE "(^|> )-3$" "$work/repl.txt"
+if command -v python3 >/dev/null; then
+  sed 's/^        triangles.append(clipped(\[A, new_vertex(A, B), new_vertex(A, C)\]))$/        triangles.append(clipped([A, new_vertex(A, C), new_vertex(A, B)]))/' \
+    "$source_dir/tests/check-functions/corpus/11_demos_translated.py" >"$work/py/demos11.py"
+  run 11 "$work/py/demos11.py" --function ClipTriangle --case 3
+  check "py: the demos' ClipTriangle, one triangle turned the other way: fails case 3" says "^ClipTriangle, case 3: incomplete"
+  repl_call | sed '$ s/.*/print([t.indexes for t in &])/' | (cd "$work/py" && python3 -) >"$work/repl.txt" 2>&1 || true
+  check "py: the REPL call gives the triangle its indexes, and an output list to fill" grep -qx "\[\[0, 3, 4\]\]" "$work/repl.txt"
 fi
 echo "== one number is said as one number"
 mkdir -p "$work/js"

@@ -57,6 +57,31 @@ function javascript(value) {
   return JSON.stringify(value);
 }
 
+// The demos' names for a plane's and a triangle's fields, to which the checker's records
+// answer too (the runners' aliases): name -> [the book's field, an index into it].
+const DEMOS_FIELDS = {
+  plane: { distance: ["D"] },
+  triangle: { indexes: ["v"], v0: ["v", 0], v1: ["v", 1], v2: ["v", 2] },
+};
+
+// A plane, a triangle or a model's triangles with the demos' names the case's code read
+// (`read`) as fields of their own, so that the pasted call gives what the checker gave.
+function withDemosNames(value, kind, read) {
+  if (!read.length || !value || typeof value !== "object" || Array.isArray(value)) return value;
+  if (kind === "model" && Array.isArray(value.triangles))
+    return {
+      ...value,
+      triangles: value.triangles.map((each) => withDemosNames(each, "triangle", read)),
+    };
+  if (!(kind in DEMOS_FIELDS)) return value;
+  const fields = Object.entries(DEMOS_FIELDS[kind]).filter(([name]) => read.includes(name));
+  const copied = fields.map(([name, [field, index]]) => [
+    name,
+    index === undefined ? value[field] : value[field]?.[index],
+  ]);
+  return { ...value, ...Object.fromEntries(copied) };
+}
+
 // The book's names the case gives, as [name, value, kind].
 function settings(given) {
   const found = [];
@@ -72,16 +97,27 @@ function settings(given) {
 
 // The lines to paste, or [] where there is no REPL to paste them into (a page).
 //   file: the student's file's name; signature: the call the checker made ({ call,
-//   parameters }); kase: the case; drawing: whether the function draws through PutPixel.
-export function readyCall(language, file, signature, kase, drawing) {
+//   parameters }); kase: the case; drawing: whether the function draws through PutPixel;
+//   demosNames: the demos' names the case's code read from the checker's records.
+export function readyCall(language, file, signature, kase, drawing, demosNames = []) {
   const given = kase.given ?? {};
   const calls = kase.calls ?? [kase.args ?? {}];
   const name = signature.call.split("(")[0];
+  // A list the function appends to (the demos' ClipTriangle): made empty before each call
+  // under its parameter's name, and shown after the last.
+  const outputs = signature.parameters
+    .filter(([, kind]) => kind === "output")
+    .map(([each]) => each);
   const argumentsOf = (call, format) =>
     signature.parameters.map(([parameter, kind, from]) =>
-      kind === "output" // a list the function appends to: empty
-        ? "[]"
-        : format(from ? from.map((each) => call[each]) : call[parameter], kind),
+      kind === "output"
+        ? parameter
+        : format(
+            from
+              ? from.map((each) => call[each])
+              : withDemosNames(call[parameter], kind, demosNames),
+            kind,
+          ),
     );
   if (language === "python") {
     const module = file.replace(/\.py$/, "");
@@ -109,15 +145,22 @@ export function readyCall(language, file, signature, kase, drawing) {
     }
     if (numbers.length) lines.splice(3, 0, numbers.join("; "));
     if (drawing) lines.push("m.PutPixel = lambda x, y, color: print(x, y, color)");
-    for (const call of calls) lines.push(`m.${name}(${argumentsOf(call, python).join(", ")})`);
+    for (const call of calls) {
+      if (outputs.length) lines.push(outputs.map((each) => `${each} = []`).join("; "));
+      lines.push(`m.${name}(${argumentsOf(call, python).join(", ")})`);
+    }
+    if (outputs.length) lines.push(outputs.join(", "));
     return lines;
   }
   if (/\.html?$/i.test(file)) return [];
   if (/\.mjs$/.test(file)) {
-    return [
-      `const m = await import("./${file}");`,
-      ...calls.map((call) => `m.${name}(${argumentsOf(call, javascript).join(", ")})`),
-    ];
+    const lines = [`const m = await import("./${file}");`];
+    for (const call of calls) {
+      if (outputs.length) lines.push(outputs.map((each) => `${each} = [];`).join(" "));
+      lines.push(`m.${name}(${argumentsOf(call, javascript).join(", ")})`);
+    }
+    if (outputs.length) lines.push(outputs.join(", "));
+    return lines;
   }
   const lines = [`.load ${file}`];
   const assignments = settings(given)
@@ -129,6 +172,10 @@ export function readyCall(language, file, signature, kase, drawing) {
     );
   if (assignments.length) lines.push(assignments.join(" "));
   if (drawing) lines.push("PutPixel = (x, y, color) => console.log(x, y, color);");
-  for (const call of calls) lines.push(`${name}(${argumentsOf(call, javascript).join(", ")})`);
+  for (const call of calls) {
+    if (outputs.length) lines.push(outputs.map((each) => `${each} = [];`).join(" "));
+    lines.push(`${name}(${argumentsOf(call, javascript).join(", ")})`);
+  }
+  if (outputs.length) lines.push(outputs.join(", "));
   return lines;
 }

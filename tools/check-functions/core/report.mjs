@@ -245,8 +245,11 @@ function helpLines(entry, number, signature, kase, answer, context) {
       );
   }
   if (options.rerun) lines.push(`alone: ${options.rerun(entry.function, caseFile, number)}`);
+  const demosNames = Array.isArray(answer.demos_names)
+    ? answer.demos_names.filter((each) => typeof each === "string")
+    : [];
   const call = options.repl
-    ? readyCall(options.language, file, signature, kase, entry.returns === "pixels")
+    ? readyCall(options.language, file, signature, kase, entry.returns === "pixels", demosNames)
     : [];
   if (call.length) {
     const repl = options.language === "python" ? "python3" : "node";

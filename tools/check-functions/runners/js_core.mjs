@@ -475,10 +475,13 @@ function named(array, names) {
 // demos' name -> the book's field, and an index into it where the demos spread a list),
 // as a triangle's indexes (demos/raster-10.html and on) or v0, v1, v2 (raster-09) for
 // its v; the aliases are not its own keys, so it spreads and prints as the book's record.
+// The aliases a case's code read, for the call the report gives to paste into a REPL.
+const demosNamesRead = new Set();
 function aliased(record, aliases) {
   for (const [alias, [field, index]] of Object.entries(aliases)) {
     Object.defineProperty(record, alias, {
       get() {
+        demosNamesRead.add(alias);
         return index === undefined ? this[field] : this[field][index];
       },
       set(value) {
@@ -760,15 +763,19 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
   const fn = chapter.value(request.function);
   let value,
     args = [];
-  const absent = () => (absentReads.size > 0 ? { absent: [...absentReads].slice(0, 5) } : {});
+  const whatItRead = () => ({
+    ...(absentReads.size > 0 ? { absent: [...absentReads].slice(0, 5) } : {}),
+    ...(demosNamesRead.size > 0 ? { demos_names: [...demosNamesRead].sort() } : {}),
+  });
   absentReads.clear(); // what the function reads, not the adapter's setup
+  demosNamesRead.clear();
   try {
     for (args of calls) value = fn(...args);
   } catch (error) {
     if (error?.code === "ERR_SCRIPT_EXECUTION_TIMEOUT") throw error;
-    return { raised: oneLine(error, ours), placed, ...absent() };
+    return { raised: oneLine(error, ours), placed, ...whatItRead() };
   }
-  const answer = { placed, returned: value, ...absent() };
+  const answer = { placed, returned: value, ...whatItRead() };
   if (pixels) answer.pixels = pixels;
   if (adapter.result) {
     try {
