@@ -25,6 +25,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -141,6 +142,10 @@ std::vector<Triangle> MeshTriangles(const std::string& name) {
   std::vector<Triangle> tilted;
   for (const Triangle& T : TorusMesh(1.6, 0.55, around, across, {255, 120, 40})) {
     tilted.push_back(Triangle{tilt * T.A, tilt * T.B, tilt * T.C, T.surface.color});
+  }
+  // Measured under its name, so it must have the count the name says.
+  if (std::to_string(tilted.size()) != name.substr(name.find('-') + 1)) {
+    throw std::logic_error(name + " has " + std::to_string(tilted.size()) + " triangles");
   }
   return tilted;
 }
