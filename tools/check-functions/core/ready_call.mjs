@@ -57,12 +57,24 @@ function javascript(value) {
   return JSON.stringify(value);
 }
 
-// The demos' names for a plane's and a triangle's fields, to which the checker's records
-// answer too (the runners' aliases): name -> [the book's field, an index into it].
-const DEMOS_FIELDS = {
-  plane: { distance: ["D"] },
-  triangle: { indexes: ["v"], v0: ["v", 0], v1: ["v", 1], v2: ["v", 2] },
-};
+// The kinds of record whose fields the checker also gives under the demos' names.
+const ALIASED = new Set(["plane", "triangle"]);
+
+// The demos' names the case's code read, as the runner reports them ({ distance: ["D"],
+// v0: ["v", 0] }: the book's field each reads, and an index into it), as [name, field,
+// index]; nothing the report does not expect from the student's process.
+function demosFieldsOf(reported) {
+  if (!reported || typeof reported !== "object" || Array.isArray(reported)) return [];
+  return Object.entries(reported)
+    .filter(
+      ([name, read]) =>
+        /^[A-Za-z_]\w*$/.test(name) &&
+        Array.isArray(read) &&
+        typeof read[0] === "string" &&
+        (read.length === 1 || (read.length === 2 && Number.isInteger(read[1]))),
+    )
+    .map(([name, [field, index]]) => [name, field, index]);
+}
 
 // A plane, a triangle or a model's triangles with the demos' names the case's code read
 // (`read`) as fields of their own, so that the pasted call gives what the checker gave.
@@ -73,12 +85,13 @@ function withDemosNames(value, kind, read) {
       ...value,
       triangles: value.triangles.map((each) => withDemosNames(each, "triangle", read)),
     };
-  if (!(kind in DEMOS_FIELDS)) return value;
-  const fields = Object.entries(DEMOS_FIELDS[kind]).filter(([name]) => read.includes(name));
-  const copied = fields.map(([name, [field, index]]) => [
-    name,
-    index === undefined ? value[field] : value[field]?.[index],
-  ]);
+  if (!ALIASED.has(kind)) return value;
+  const copied = read
+    .filter(([name, field]) => field in value && !(name in value))
+    .map(([name, field, index]) => [
+      name,
+      index === undefined ? value[field] : value[field]?.[index],
+    ]);
   return { ...value, ...Object.fromEntries(copied) };
 }
 
@@ -98,8 +111,10 @@ function settings(given) {
 // The lines to paste, or [] where there is no REPL to paste them into (a page).
 //   file: the student's file's name; signature: the call the checker made ({ call,
 //   parameters }); kase: the case; drawing: whether the function draws through PutPixel;
-//   demosNames: the demos' names the case's code read from the checker's records.
-export function readyCall(language, file, signature, kase, drawing, demosNames = []) {
+//   demosFields: the demos' names the case's code read from the checker's records, as
+//   the runner reported them.
+export function readyCall(language, file, signature, kase, drawing, { demosFields } = {}) {
+  const demosNames = demosFieldsOf(demosFields);
   const given = kase.given ?? {};
   const calls = kase.calls ?? [kase.args ?? {}];
   const name = signature.call.split("(")[0];

@@ -245,11 +245,10 @@ function helpLines(entry, number, signature, kase, answer, context) {
       );
   }
   if (options.rerun) lines.push(`alone: ${options.rerun(entry.function, caseFile, number)}`);
-  const demosNames = Array.isArray(answer.demos_names)
-    ? answer.demos_names.filter((each) => typeof each === "string")
-    : [];
   const call = options.repl
-    ? readyCall(options.language, file, signature, kase, entry.returns === "pixels", demosNames)
+    ? readyCall(options.language, file, signature, kase, entry.returns === "pixels", {
+        demosFields: answer.demos_fields,
+      })
     : [];
   if (call.length) {
     const repl = options.language === "python" ? "python3" : "node";

@@ -475,13 +475,14 @@ function named(array, names) {
 // demos' name -> the book's field, and an index into it where the demos spread a list),
 // as a triangle's indexes (demos/raster-10.html and on) or v0, v1, v2 (raster-09) for
 // its v; the aliases are not its own keys, so it spreads and prints as the book's record.
-// The aliases a case's code read, for the call the report gives to paste into a REPL.
-const demosNamesRead = new Set();
+// The aliases a case's code read, each with its field (and index), for the call the
+// report gives to paste into a REPL.
+const demosFieldsRead = new Map();
 function aliased(record, aliases) {
   for (const [alias, [field, index]] of Object.entries(aliases)) {
     Object.defineProperty(record, alias, {
       get() {
-        demosNamesRead.add(alias);
+        demosFieldsRead.set(alias, index === undefined ? [field] : [field, index]);
         return index === undefined ? this[field] : this[field][index];
       },
       set(value) {
@@ -765,10 +766,12 @@ export function runCase(request, chapter, adapter, names, readNames, functionRea
     args = [];
   const whatItRead = () => ({
     ...(absentReads.size > 0 ? { absent: [...absentReads].slice(0, 5) } : {}),
-    ...(demosNamesRead.size > 0 ? { demos_names: [...demosNamesRead].sort() } : {}),
+    ...(demosFieldsRead.size > 0
+      ? { demos_fields: Object.fromEntries([...demosFieldsRead].sort()) }
+      : {}),
   });
   absentReads.clear(); // what the function reads, not the adapter's setup
-  demosNamesRead.clear();
+  demosFieldsRead.clear();
   try {
     for (args of calls) value = fn(...args);
   } catch (error) {

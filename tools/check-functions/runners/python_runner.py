@@ -64,12 +64,12 @@ class Record(types.SimpleNamespace):
         "v2": ("v", 2),
         "distance": ("D",),
     }
-    demos_names_read = set()  # the aliases the case's code read, for the report's REPL call
+    demos_fields_read = {}  # the aliases the case's code read, for the report's REPL call
 
     def __getattr__(self, name):  # only for a name the record does not have
         field, *index = Record.ALIASES.get(name, (None,))
         if field in vars(self):
-            Record.demos_names_read.add(name)
+            Record.demos_fields_read[name] = [field, *index]
             value = vars(self)[field]
             return value[index[0]] if index else value
         raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
@@ -754,13 +754,13 @@ def run_case(request, chapter):
         return {"adapter_failed": one_line(error)}
     function = getattr(chapter.main, request["function"])
     value, args = None, []
-    Record.demos_names_read.clear()  # what the function reads, not the adapter's setup
+    Record.demos_fields_read.clear()  # what the function reads, not the adapter's setup
     try:
         for args in calls:
             value = function(*args)
     except BaseException as error:
-        return {"raised": one_line(error), "placed": sorted(placed), **demos_names()}
-    answer = {"placed": sorted(placed), "returned": value, **demos_names()}
+        return {"raised": one_line(error), "placed": sorted(placed), **demos_fields()}
+    answer = {"placed": sorted(placed), "returned": value, **demos_fields()}
     if drawing:
         answer["pixels"] = drawing.calls
     if hasattr(adapter, "own_result"):
@@ -773,10 +773,11 @@ def run_case(request, chapter):
     return answer
 
 
-def demos_names():
-    """The demos' names the case's code read from the checker's records, if any."""
-    read = sorted(Record.demos_names_read)
-    return {"demos_names": read} if read else {}
+def demos_fields():
+    """The demos' names the case's code read from the checker's records, if any, each
+    with the book's field (and index) it reads: {"distance": ["D"], "v0": ["v", 0]}."""
+    read = dict(sorted(Record.demos_fields_read.items()))
+    return {"demos_fields": read} if read else {}
 
 
 def argument(adapter, spec, call):
