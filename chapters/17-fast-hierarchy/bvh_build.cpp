@@ -31,6 +31,19 @@ float Down(double v) {
   return f > v ? std::nextafter(f, -HUGE_VALF) : f;
 }
 
+// The object as a prepared sphere, or a triangle, whose tests the leaves hold a copy
+// of; nullptr for any other object. Sphere and Triangle are final: typeid names the
+// exact type.
+const Sphere* PreparedSphere(const Object& object) {
+  const auto* sphere =
+      typeid(object) == typeid(Sphere) ? static_cast<const Sphere*>(&object) : nullptr;
+  return sphere != nullptr && sphere->cached ? sphere : nullptr;
+}
+
+const Triangle* AsTriangle(const Object& object) {
+  return typeid(object) == typeid(Triangle) ? static_cast<const Triangle*>(&object) : nullptr;
+}
+
 float Up(double v) {
   const float f = static_cast<float>(v);
   return f < v ? std::nextafter(f, HUGE_VALF) : f;
@@ -118,55 +131,51 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
   // order; order_ takes the objects' final order.
   std::vector<Bound> items;
   items.reserve(objects.size());
-  // The prepared spheres' tests, taken while each object is at hand (Sphere is final:
-  // its exact type), in scene order; -1 for any other object.
-  std::vector<LeafSphere> scene_spheres;
-  std::vector<int> sphere_of;
-  sphere_of.reserve(objects.size());
-  std::vector<LeafTriangle> scene_triangles;  // and the triangles' (Triangle is final too)
-  std::vector<int> triangle_of;
-  triangle_of.reserve(objects.size());
-  for (const auto& pointer : objects) {
-    const Object& object = *pointer;
-    objects_.push_back(&object);
-    const FloatBox box = Rounded(object.Bounds());
+  objects_.reserve(objects.size());
+  std::size_t spheres = 0;
+  std::size_t triangles = 0;
+  for (const auto& object : objects) {
+    objects_.push_back(object.get());
+    const FloatBox box = Rounded(object->Bounds());
     items.push_back({box, static_cast<float>(SurfaceArea(box)), static_cast<int>(items.size())});
-    const auto* sphere =
-        typeid(object) == typeid(Sphere) ? static_cast<const Sphere*>(&object) : nullptr;
-    sphere_of.push_back(sphere != nullptr && sphere->cached ? static_cast<int>(scene_spheres.size())
-                                                            : -1);
-    if (sphere_of.back() >= 0) {
-      scene_spheres.push_back({sphere->center, sphere->cache});
-    }
-    const auto* triangle =
-        typeid(object) == typeid(Triangle) ? static_cast<const Triangle*>(&object) : nullptr;
-    triangle_of.push_back(triangle != nullptr ? static_cast<int>(scene_triangles.size()) : -1);
-    if (triangle != nullptr) {
-      scene_triangles.push_back({triangle->A, triangle->B, triangle->C, triangle->N});
-    }
+    spheres += PreparedSphere(*object) != nullptr;
+    triangles += AsTriangle(*object) != nullptr;
   }
   const int count = static_cast<int>(objects.size());
   nodes_.reserve(objects.size());
   if (count > 0) {
     Build(0, Summarise(0, count, items), items, 1);
+    // Pack makes a leaf of each of the build's leaves and at most one node of each inner
+    // node, of which a binary tree has one fewer than leaves.
+    const auto leaves = std::count_if(nodes_.begin(), nodes_.end(),
+                                      [](const Node& node) { return node.count > 0; });
+    leaves_.reserve(leaves);
+    packed_.reserve(leaves);
     root_ = Pack(0);
     const FloatBox& root = nodes_[0].box;
     root_box_ = {{root.min[0], root.min[1], root.min[2]}, {root.max[0], root.max[1], root.max[2]}};
   }
-  spheres_.reserve(items.size());
+  // The leaves' copies of what the tests of prepared spheres and of triangles read, in
+  // leaf order. Every array is sized before it is filled: at a million objects, growing
+  // them costs more than the rest of the build.
+  order_.reserve(items.size());
   slot_of_.resize(items.size());
+  slot_spheres_.reserve(items.size());
+  spheres_.reserve(spheres);
+  slot_triangles_.reserve(items.size());
+  triangles_.reserve(triangles);
   for (const Bound& item : items) {
     slot_of_[item.object] = static_cast<int>(order_.size());
     order_.push_back(item.object);
-    const int sphere = sphere_of[item.object];
-    slot_spheres_.push_back(sphere >= 0 ? static_cast<int>(spheres_.size()) : -1);
-    if (sphere >= 0) {
-      spheres_.push_back(scene_spheres[sphere]);
+    const Sphere* sphere = PreparedSphere(*objects_[item.object]);
+    slot_spheres_.push_back(sphere != nullptr ? static_cast<int>(spheres_.size()) : -1);
+    if (sphere != nullptr) {
+      spheres_.push_back({sphere->center, sphere->cache});
     }
-    const int triangle = triangle_of[item.object];
-    slot_triangles_.push_back(triangle >= 0 ? static_cast<int>(triangles_.size()) : -1);
-    if (triangle >= 0) {
-      triangles_.push_back(scene_triangles[triangle]);
+    const Triangle* triangle = AsTriangle(*objects_[item.object]);
+    slot_triangles_.push_back(triangle != nullptr ? static_cast<int>(triangles_.size()) : -1);
+    if (triangle != nullptr) {
+      triangles_.push_back({triangle->A, triangle->B, triangle->C, triangle->N});
     }
   }
 }
