@@ -31,6 +31,11 @@ float Down(double v) {
   return f > v ? std::nextafter(f, -HUGE_VALF) : f;
 }
 
+float Up(double v) {
+  const float f = static_cast<float>(v);
+  return f < v ? std::nextafter(f, HUGE_VALF) : f;
+}
+
 // The object as a prepared sphere, or a triangle, whose tests the leaves hold a copy
 // of; nullptr for any other object. Sphere and Triangle are final: typeid names the
 // exact type.
@@ -42,11 +47,6 @@ const Sphere* PreparedSphere(const Object& object) {
 
 const Triangle* AsTriangle(const Object& object) {
   return typeid(object) == typeid(Triangle) ? static_cast<const Triangle*>(&object) : nullptr;
-}
-
-float Up(double v) {
-  const float f = static_cast<float>(v);
-  return f < v ? std::nextafter(f, HUGE_VALF) : f;
 }
 
 // The float box around a double one: each bound rounded outwards.
@@ -156,8 +156,8 @@ Bvh::Bvh(const std::vector<std::shared_ptr<Object>>& objects) {
     root_box_ = {{root.min[0], root.min[1], root.min[2]}, {root.max[0], root.max[1], root.max[2]}};
   }
   // The leaves' copies of what the tests of prepared spheres and of triangles read, in
-  // leaf order. Every array is sized before it is filled: at a million objects, growing
-  // them costs more than the rest of the build.
+  // leaf order. Every array is sized before it is filled: an array grown as it is filled
+  // is copied, and its memory asked for again, on the way (the README's "Building").
   order_.reserve(items.size());
   slot_of_.resize(items.size());
   slot_spheres_.reserve(items.size());
