@@ -195,10 +195,10 @@ std::vector<double> DrawDepths(const Scene& seen, const std::vector<Plane>& plan
 // A point light's view: a cube map's face seen from the light.
 DepthMap PerspectiveView(const Scene& scene, const Vec3& position, CubeFace face, int size) {
   const Viewport viewport = CubeFaceViewport(scene);
+  const std::vector<Plane> planes = CubeFaceClippingPlanes(viewport.distance, size);
   const Scene seen = CubeFaceView(scene, position, face, viewport);
   const glm::dmat4 world_to_view = MakeCameraMatrix(position, CubeFaceOrientation(face));
-  return {size, DrawDepths(seen, CubeFaceClippingPlanes(viewport.distance, size), size),
-          world_to_view, false, 1};
+  return {size, DrawDepths(seen, planes, size), world_to_view, false, 1};
 }
 
 // A directional light's view: orthographic, a point (x, y, z) of the view at (x, y),
