@@ -11,7 +11,8 @@ names() { grep -o '`[^`]*\.h`' | tr -d '`' | sort | paste -sd' ' || true; }
 failed=0
 previous=""
 for folder in chapters/[0-9][0-9]-*/; do
-  chapter=$(basename "$folder")
+  chapter=${folder%/}
+  chapter=${chapter##*/}
   if [ -z "$previous" ]; then previous=$chapter; continue; fi
   paragraph=$(awk '/^(Changed headers|Headers, for a student)/ { p = 1 } p && /^$/ { exit } p' \
     "chapters/$chapter/README.md" | tr '\n' ' ')
@@ -19,16 +20,16 @@ for folder in chapters/[0-9][0-9]-*/; do
   # A bonus chapter built on an earlier one than the folder before it names its base.
   if [[ $paragraph =~ copy\ of\ chapter\ ([0-9][0-9]) ]]; then
     base=(chapters/"${BASH_REMATCH[1]}"-*)
-    previous=$(basename "${base[0]}")
+    previous=${base[0]##*/}
   fi
   changed="" new="" gone=""
   for header in chapters/"$chapter"/*.h; do
-    name=$(basename "$header")
+    name=${header##*/}
     if [ ! -f "chapters/$previous/$name" ]; then new="$new $name"
     elif ! cmp -s "chapters/$previous/$name" "$header"; then changed="$changed $name"; fi
   done
   for header in chapters/"$previous"/*.h; do
-    [ -f "chapters/$chapter/$(basename "$header")" ] || gone="$gone $(basename "$header")"
+    [ -f "chapters/$chapter/${header##*/}" ] || gone="$gone ${header##*/}"
   done
   if [ -z "$paragraph" ]; then
     echo "FAIL: chapters/$chapter/README.md has no \"Changed headers\" paragraph"; failed=1
