@@ -30,7 +30,7 @@ while IFS=: read -r file line include; do
   echo "FAIL: $file:$line includes $name: the book code includes only its chapter's" \
     "book files, common/ and instrumentation/ (cgfs/...), GLM and the standard library"
   failed=1
-done < <(grep -nE '^[[:space:]]*#[[:space:]]*include' chapters/[0-9][0-9]-*/*.h \
+done < <(grep -nHE '^[[:space:]]*#[[:space:]]*include' chapters/[0-9][0-9]-*/*.h \
   chapters/[0-9][0-9]-*/*.cpp || true)
 [ "$failed" = 0 ] && echo "every chapter's book code includes only common/, GLM and the standard library"
 exit "$failed"
