@@ -698,7 +698,9 @@ the chapter's C++ compiled to WebAssembly (the small pictures below are drawn th
 as this page loads), its README, its source files and its diff from the chapter it
 continues. The project's own <a href="readme.html">README</a> says how to build the
 programs, run the tests and compare your own images with these.</p>
+<div class="chapters">
 {rendered}
+</div>
 {speed}
 </main>"""
         self.page(
